@@ -1,0 +1,49 @@
+#pragma once
+// Typed exceptions. Every message says what went wrong and where (element
+// index, or file and line), so the CLI can print it as one line.
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace subdiv {
+
+/// Base of every error the library throws on purpose.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// The caller passed something unusable: bad arguments, a malformed mesh.
+class InvalidInputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// The mesh's connectivity cannot support the requested operation
+/// (non-manifold where manifold is required, out-of-range indices...).
+class TopologyError : public InvalidInputError {
+ public:
+  using InvalidInputError::InvalidInputError;
+};
+
+/// A file could not be opened, read or written.
+class IoError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A file's contents are malformed. line() is 1-based; 0 when the problem
+/// has no line (binary formats, a missing header).
+class ParseError : public IoError {
+ public:
+  ParseError(const std::string& path, std::uint64_t line, const std::string& what);
+  const std::string& path() const { return path_; }
+  std::uint64_t line() const { return line_; }
+
+ private:
+  std::string path_;
+  std::uint64_t line_;
+};
+
+}  // namespace subdiv

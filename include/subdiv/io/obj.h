@@ -1,0 +1,37 @@
+#pragma once
+// Wavefront OBJ: v (optionally with r g b), vt, vn, f in the v, v/vt, v//vn
+// and v/vt/vn forms with negative (relative) indices, comments, groups, and
+// OpenSubdiv's tag lines:
+//
+//   t crease N/M/0 a0 b0 a1 b1 ... s...   N/2 edges (a_i, b_i); M = 1 or N/2 sharpnesses
+//   t corner N/M/S v... s... [type...]    M = 1 or N sharpnesses; S = 0, 1 or N
+//                                         types: convex | concave, optionally
+//                                         ":degrees" (e.g. concave:270)
+//   t hole N/0/0 f...                     faces
+//   t interpolateboundary 1/0/0 m         0 none, 1 edge-and-corner, 2 edge-only
+//   t facevaryinginterpolateboundary 1/0/0 m   0 none .. 5 all (OpenSubdiv order)
+//   t facevaryingpropagatecorners 1/0/0 b
+//   t creasemethod 0/0/1 normal|chaikin
+//   t smoothtriangles 0/0/1 catmark|smooth
+//
+// Indices in tags are 0-based, as OpenSubdiv writes them. Any other tag
+// (vertexedit, edgeedit, faceedit...) is kept verbatim and written back.
+// `vt` coordinates become the face-varying channel "uv" (2 components),
+// `vn` the face-varying channel "normal", vertex colours the vertex channel
+// "color"; a channel that only some faces use is dropped with a warning.
+
+#include <string>
+#include <string_view>
+
+#include "subdiv/io/mesh_io.h"
+
+namespace subdiv {
+
+/// Parses OBJ text; `path` only names the source in error messages.
+MeshFile parse_obj(std::string_view text, const std::string& path = {});
+
+/// Serialises a mesh as OBJ text (shortest round-trip decimal numbers).
+std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options = {},
+                       std::vector<std::string>* warnings = nullptr);
+
+}  // namespace subdiv

@@ -1,0 +1,130 @@
+#pragma once
+// Connectivity derived from a PolygonMesh's face arrays: edges, edge-face
+// incidence, ordered vertex rings, boundary loops. Built in O(n) after a
+// per-vertex bucket sort of half-edges (buckets are as small as valences).
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "subdiv/core/types.h"
+#include "subdiv/mesh/polygon_mesh.h"
+
+namespace subdiv {
+
+enum class VertexKind : std::uint8_t {
+  isolated,      ///< used by no face
+  interior,      ///< one closed fan of faces, every incident edge has two faces
+  boundary,      ///< one open fan, bounded by two boundary edges
+  non_manifold,  ///< several fans, a non-manifold incident edge, or a face using it twice
+};
+
+/// A connected component of the boundary-edge graph. When the component is a
+/// simple closed chain of consistently oriented boundary edges, `vertices`
+/// follows it in the faces' direction and `ordered` is true; otherwise
+/// `vertices` lists the component's vertices in increasing order.
+struct BoundaryLoop {
+  std::vector<Index> vertices;
+  bool ordered = false;
+};
+
+class MeshTopology {
+ public:
+  /// Throws InvalidInputError if the mesh's index arrays are malformed
+  /// (see check_indices). Any other defect (degenerate faces, non-manifold
+  /// elements, flipped faces) is represented, not rejected.
+  explicit MeshTopology(const PolygonMesh& mesh);
+
+  Index vertex_count() const { return static_cast<Index>(vertex_kind_.size()); }
+  Index face_count() const { return static_cast<Index>(face_offsets_.size()) - 1; }
+  Index corner_count() const { return static_cast<Index>(corner_vertex_.size()); }
+  Index edge_count() const { return static_cast<Index>(edge_vertices_.size()); }
+
+  // --- faces and corners -------------------------------------------------
+  Index face_size(Index f) const { return face_offsets_[f + 1] - face_offsets_[f]; }
+  Index face_first_corner(Index f) const { return face_offsets_[f]; }
+  Index corner_face(Index c) const { return corner_face_[c]; }
+  Index corner_vertex(Index c) const { return corner_vertex_[c]; }
+  Index corner_next(Index c) const {
+    const Index f = corner_face_[c];
+    return c + 1 == face_offsets_[f + 1] ? face_offsets_[f] : c + 1;
+  }
+  Index corner_prev(Index c) const {
+    const Index f = corner_face_[c];
+    return c == face_offsets_[f] ? face_offsets_[f + 1] - 1 : c - 1;
+  }
+  /// Edge from corner c to the next corner of its face; kInvalidIndex when
+  /// both corners hold the same vertex (a degenerate face).
+  Index corner_edge(Index c) const { return corner_edge_[c]; }
+
+  // --- edges ---------------------------------------------------------------
+  /// The two vertices, smaller index first.
+  std::array<Index, 2> edge_vertices(Index e) const { return edge_vertices_[e]; }
+  /// The corners whose outgoing edge is e: one per face side, increasing.
+  std::span<const Index> edge_corners(Index e) const { return span_of(edge_corner_offsets_, edge_corners_, e); }
+  Index edge_face_count(Index e) const { return edge_corner_offsets_[e + 1] - edge_corner_offsets_[e]; }
+  bool is_boundary_edge(Index e) const { return edge_face_count(e) == 1; }
+  bool is_non_manifold_edge(Index e) const { return edge_face_count(e) > 2; }
+  /// True when the edge has two face sides traversing it in the same
+  /// direction: the faces' orientations disagree.
+  bool is_flipped_edge(Index e) const;
+  /// The edge joining a and b, or kInvalidIndex.
+  Index find_edge(Index a, Index b) const;
+
+  // --- vertices ------------------------------------------------------------
+  VertexKind vertex_kind(Index v) const { return vertex_kind_[v]; }
+  /// Face corners at v. When ring_ordered(v) they run counter-clockwise
+  /// around v (seen from outside); for a boundary vertex the first corner's
+  /// face has vertex_edges(v).front() as a boundary edge.
+  std::span<const Index> vertex_corners(Index v) const { return span_of(vertex_corner_offsets_, vertex_corners_, v); }
+  /// Edges at v. When ring_ordered(v): e_0 .. e_{m-1} counter-clockwise,
+  /// with face vertex_corners(v)[j] lying between e_j and e_{j+1}; a boundary
+  /// vertex has m = k + 1 edges for k faces, e_0 and e_k on the boundary.
+  /// Otherwise increasing edge indices.
+  std::span<const Index> vertex_edges(Index v) const { return span_of(vertex_edge_offsets_, vertex_edges_, v); }
+  Index valence(Index v) const { return vertex_edge_offsets_[v + 1] - vertex_edge_offsets_[v]; }
+  Index vertex_face_count(Index v) const { return vertex_corner_offsets_[v + 1] - vertex_corner_offsets_[v]; }
+  bool ring_ordered(Index v) const { return ring_ordered_[v] != 0; }
+  /// Number of edge-connected fans of faces around v (0 for isolated).
+  Index fan_count(Index v) const { return fan_count_[v]; }
+  /// The vertex at the other end of edge e from v.
+  Index other_vertex(Index e, Index v) const {
+    return edge_vertices_[e][0] == v ? edge_vertices_[e][1] : edge_vertices_[e][0];
+  }
+
+  // --- boundary ------------------------------------------------------------
+  const std::vector<BoundaryLoop>& boundary_loops() const { return boundary_loops_; }
+
+ private:
+  static std::span<const Index> span_of(const std::vector<Index>& offsets,
+                                        const std::vector<Index>& items, Index i) {
+    return {items.data() + offsets[i], static_cast<std::size_t>(offsets[i + 1] - offsets[i])};
+  }
+  void build_edges();
+  void build_vertex_incidence();
+  void count_fans();
+  void classify_and_order_vertices();
+  bool order_ring(Index v);
+  void build_boundary_loops();
+
+  std::vector<Index> face_offsets_;
+  std::vector<Index> corner_vertex_;
+  std::vector<Index> corner_face_;
+  std::vector<Index> corner_edge_;
+
+  std::vector<std::array<Index, 2>> edge_vertices_;
+  std::vector<Index> edge_corner_offsets_;
+  std::vector<Index> edge_corners_;
+
+  std::vector<Index> vertex_corner_offsets_;
+  std::vector<Index> vertex_corners_;
+  std::vector<Index> vertex_edge_offsets_;
+  std::vector<Index> vertex_edges_;
+  std::vector<VertexKind> vertex_kind_;
+  std::vector<std::uint8_t> ring_ordered_;
+  std::vector<Index> fan_count_;
+
+  std::vector<BoundaryLoop> boundary_loops_;
+};
+
+}  // namespace subdiv

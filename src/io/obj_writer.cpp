@@ -1,0 +1,185 @@
+// OBJ writer: positions (with colours when the mesh has a 3-component "color"
+// vertex channel), the "uv" and "normal" face-varying channels, faces, and
+// tags in OpenSubdiv's syntax.
+
+#include <cmath>
+#include <numbers>
+
+#include "subdiv/io/obj.h"
+#include "text_format.h"
+
+namespace subdiv {
+
+namespace {
+
+using detail::append_number;
+
+void append_tag_header(std::string& out, const char* name, std::size_t ints, std::size_t floats, std::size_t strings) {
+  out += "t ";
+  out += name;
+  out += ' ';
+  append_number(out, static_cast<long long>(ints));
+  out += '/';
+  append_number(out, static_cast<long long>(floats));
+  out += '/';
+  append_number(out, static_cast<long long>(strings));
+}
+
+void append_tags(std::string& out, const Tags& tags) {
+  for (const auto& c : tags.creases) {
+    append_tag_header(out, "crease", 2, 1, 0);
+    for (const double x : {static_cast<double>(c.v0), static_cast<double>(c.v1)}) {
+      out += ' ';
+      append_number(out, static_cast<long long>(x));
+    }
+    out += ' ';
+    append_number(out, c.sharpness);
+    out += '\n';
+  }
+  for (const auto& c : tags.corners) {
+    const bool typed = c.type != CornerType::unspecified;
+    append_tag_header(out, "corner", 1, 1, typed ? 1 : 0);
+    out += ' ';
+    append_number(out, c.vertex);
+    out += ' ';
+    append_number(out, c.sharpness);
+    if (typed) {
+      out += ' ';
+      out += to_string(c.type);
+      if (c.angle) {
+        out += ':';
+        append_number(out, *c.angle * 180.0 / std::numbers::pi);
+      }
+    }
+    out += '\n';
+  }
+  if (!tags.holes.empty()) {
+    append_tag_header(out, "hole", tags.holes.size(), 0, 0);
+    for (const Index f : tags.holes) {
+      out += ' ';
+      append_number(out, f);
+    }
+    out += '\n';
+  }
+  if (tags.boundary_interpolation_set) {
+    append_tag_header(out, "interpolateboundary", 1, 0, 0);
+    const int code = tags.boundary_interpolation == BoundaryInterpolation::none ? 0
+                     : tags.boundary_interpolation == BoundaryInterpolation::edge_and_corner ? 1 : 2;
+    out += ' ';
+    append_number(out, code);
+    out += '\n';
+  }
+  if (tags.face_varying_interpolation_set) {
+    append_tag_header(out, "facevaryinginterpolateboundary", 1, 0, 0);
+    out += ' ';
+    append_number(out, static_cast<int>(tags.face_varying_interpolation));
+    out += '\n';
+  }
+  if (tags.face_varying_propagate_corners_set) {
+    append_tag_header(out, "facevaryingpropagatecorners", 1, 0, 0);
+    out += tags.face_varying_propagate_corners ? " 1\n" : " 0\n";
+  }
+  if (tags.crease_method_set) {
+    append_tag_header(out, "creasemethod", 0, 0, 1);
+    out += tags.crease_method == CreaseMethod::uniform ? " normal\n" : " chaikin\n";
+  }
+  if (tags.triangle_subdivision_set) {
+    append_tag_header(out, "smoothtriangles", 0, 0, 1);
+    out += tags.triangle_subdivision == TriangleSubdivision::catmark ? " catmark\n" : " smooth\n";
+  }
+  for (const auto& raw : tags.other) {
+    append_tag_header(out, raw.name.c_str(), raw.ints.size(), raw.floats.size(), raw.strings.size());
+    for (const long long i : raw.ints) {
+      out += ' ';
+      append_number(out, i);
+    }
+    for (const double f : raw.floats) {
+      out += ' ';
+      append_number(out, f);
+    }
+    for (const auto& s : raw.strings) {
+      out += ' ';
+      out += s;
+    }
+    out += '\n';
+  }
+}
+
+}  // namespace
+
+std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options, std::vector<std::string>* warnings) {
+  std::string out;
+  out.reserve(static_cast<std::size_t>(mesh.vertex_count()) * 40 + static_cast<std::size_t>(mesh.corner_count()) * 8);
+  out += "# subdiv OBJ: ";
+  append_number(out, mesh.vertex_count());
+  out += " vertices, ";
+  append_number(out, mesh.face_count());
+  out += " faces\n";
+
+  const VertexChannel* color = nullptr;
+  const FaceVaryingChannel* uv = nullptr;
+  const FaceVaryingChannel* normal = nullptr;
+  if (options.write_channels) {
+    for (const auto& ch : mesh.vertex_channels) {
+      if (ch.name == "color" && ch.components == 3) color = &ch;
+      else if (warnings) warnings->push_back("OBJ has no place for vertex channel '" + ch.name + "': not written");
+    }
+    for (const auto& ch : mesh.face_varying_channels) {
+      if (ch.name == "uv" && (ch.components == 2 || ch.components == 3)) uv = &ch;
+      else if (ch.name == "normal" && ch.components == 3) normal = &ch;
+      else if (warnings) warnings->push_back("OBJ has no place for face-varying channel '" + ch.name + "': not written");
+    }
+  }
+
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    const Vec3 p = mesh.positions[static_cast<std::size_t>(v)];
+    out += "v ";
+    append_number(out, p.x);
+    out += ' ';
+    append_number(out, p.y);
+    out += ' ';
+    append_number(out, p.z);
+    if (color) {
+      for (int i = 0; i < 3; ++i) {
+        out += ' ';
+        append_number(out, color->values[static_cast<std::size_t>(v) * 3 + static_cast<std::size_t>(i)]);
+      }
+    }
+    out += '\n';
+  }
+  auto append_values = [&](const FaceVaryingChannel& ch, const char* keyword) {
+    const auto k = static_cast<std::size_t>(ch.components);
+    for (std::size_t i = 0; i < ch.values.size(); i += k) {
+      out += keyword;
+      for (std::size_t j = 0; j < k; ++j) {
+        out += ' ';
+        append_number(out, ch.values[i + j]);
+      }
+      out += '\n';
+    }
+  };
+  if (uv) append_values(*uv, "vt");
+  if (normal) append_values(*normal, "vn");
+
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    out += 'f';
+    for (Index c = mesh.face_offsets[static_cast<std::size_t>(f)]; c < mesh.face_offsets[static_cast<std::size_t>(f) + 1]; ++c) {
+      const auto ci = static_cast<std::size_t>(c);
+      out += ' ';
+      append_number(out, mesh.face_indices[ci] + 1);
+      if (uv || normal) {
+        out += '/';
+        if (uv) append_number(out, uv->indices[ci] + 1);
+        if (normal) {
+          out += '/';
+          append_number(out, normal->indices[ci] + 1);
+        }
+      }
+    }
+    out += '\n';
+  }
+  if (options.write_tags) append_tags(out, mesh.tags);
+  return out;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,97 @@
+#pragma once
+// A cursor over one line of text: whitespace-separated tokens, integers and
+// doubles (fast_float), without allocation.
+
+#include <charconv>
+#include <cstring>
+#include <cstdint>
+#include <string_view>
+
+#include <fast_float/fast_float.h>
+
+namespace subdiv::detail {
+
+inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+class LineScanner {
+ public:
+  LineScanner(const char* begin, const char* end) : p_(begin), end_(end) {}
+  explicit LineScanner(std::string_view s) : p_(s.data()), end_(s.data() + s.size()) {}
+
+  void skip_spaces() {
+    while (p_ != end_ && is_space(*p_)) ++p_;
+  }
+  bool at_end() {
+    skip_spaces();
+    return p_ == end_;
+  }
+  /// The next whitespace-delimited token ("" at the end of the line).
+  std::string_view token() {
+    skip_spaces();
+    const char* start = p_;
+    while (p_ != end_ && !is_space(*p_)) ++p_;
+    return {start, static_cast<std::size_t>(p_ - start)};
+  }
+  /// Parses a double token; false (cursor unchanged past spaces) if the next
+  /// token is not exactly one number.
+  bool number(double& value) {
+    skip_spaces();
+    const char* start = p_;
+    if (start != end_ && *start == '+') ++start;  // fast_float rejects a leading '+'
+    const auto result = fast_float::from_chars(start, end_, value);
+    if (result.ec != std::errc() || (result.ptr != end_ && !is_space(*result.ptr))) return false;
+    p_ = result.ptr;
+    return true;
+  }
+  /// Parses an integer that may be followed by `stop` (e.g. '/') as well as
+  /// by whitespace. False on overflow or if no digits are there.
+  bool integer(long long& value, char stop = ' ') {
+    skip_spaces();
+    const char* start = p_;
+    if (start != end_ && *start == '+') ++start;
+    const auto result = std::from_chars(start, end_, value);
+    if (result.ec != std::errc()) return false;
+    if (result.ptr != end_ && !is_space(*result.ptr) && *result.ptr != stop) return false;
+    p_ = result.ptr;
+    return true;
+  }
+  bool consume(char c) {
+    if (p_ != end_ && *p_ == c) {
+      ++p_;
+      return true;
+    }
+    return false;
+  }
+  char peek() const { return p_ != end_ ? *p_ : '\0'; }
+  const char* position() const { return p_; }
+  std::string_view rest() const { return {p_, static_cast<std::size_t>(end_ - p_)}; }
+
+ private:
+  const char* p_;
+  const char* end_;
+};
+
+/// Iterates over the lines of a buffer ('\n' separated, '\r' left to the
+/// scanner, which treats it as space), counting them from 1.
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : p_(text.data()), end_(text.data() + text.size()) {}
+  bool next(std::string_view& line) {
+    if (p_ == end_) return false;
+    const char* nl = static_cast<const char*>(std::memchr(p_, '\n', static_cast<std::size_t>(end_ - p_)));
+    const char* stop = nl ? nl : end_;
+    line = {p_, static_cast<std::size_t>(stop - p_)};
+    p_ = nl ? nl + 1 : end_;
+    ++line_;
+    return true;
+  }
+  std::uint64_t line_number() const { return line_; }
+  std::size_t bytes_left() const { return static_cast<std::size_t>(end_ - p_); }
+
+ private:
+  const char* p_;
+  const char* end_;
+  std::uint64_t line_ = 0;
+};
+
+}  // namespace subdiv::detail

@@ -1,0 +1,267 @@
+#include "subdiv/mesh/topology.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "union_find.h"
+
+namespace subdiv {
+
+namespace {
+
+// Turns per-bucket counts (size n + 1, counts in [1..n]) into CSR offsets.
+void counts_to_offsets(std::vector<Index>& offsets) {
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+}
+
+}  // namespace
+
+MeshTopology::MeshTopology(const PolygonMesh& mesh)
+    : face_offsets_(mesh.face_offsets), corner_vertex_(mesh.face_indices) {
+  check_face_arrays(mesh);
+  const Index nc = corner_count();
+  corner_face_.resize(static_cast<std::size_t>(nc));
+  for (Index f = 0; f < face_count(); ++f)
+    std::fill(corner_face_.begin() + face_offsets_[f], corner_face_.begin() + face_offsets_[f + 1], f);
+  vertex_kind_.assign(static_cast<std::size_t>(mesh.vertex_count()), VertexKind::isolated);
+
+  build_edges();
+  build_vertex_incidence();
+  count_fans();
+  classify_and_order_vertices();
+  build_boundary_loops();
+}
+
+// Half-edges are bucketed by their smaller vertex (a counting sort), then each
+// small bucket is sorted by (larger vertex, corner). Edges come out numbered
+// in (min, max) order, independent of face order within a bucket.
+void MeshTopology::build_edges() {
+  const Index nc = corner_count();
+  const Index nv = vertex_count();
+  corner_edge_.assign(static_cast<std::size_t>(nc), kInvalidIndex);
+
+  std::vector<Index> bucket_offsets(static_cast<std::size_t>(nv) + 1, 0);
+  for (Index c = 0; c < nc; ++c) {
+    const Index a = corner_vertex_[c], b = corner_vertex_[corner_next(c)];
+    if (a != b) ++bucket_offsets[std::min(a, b) + 1];
+  }
+  counts_to_offsets(bucket_offsets);
+  struct HalfEdge { Index other; Index corner; };
+  std::vector<HalfEdge> buckets(static_cast<std::size_t>(bucket_offsets.back()));
+  {
+    std::vector<Index> fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
+    for (Index c = 0; c < nc; ++c) {
+      const Index a = corner_vertex_[c], b = corner_vertex_[corner_next(c)];
+      if (a != b) buckets[fill[std::min(a, b)]++] = {std::max(a, b), c};
+    }
+  }
+
+  edge_corner_offsets_.clear();
+  edge_corners_.reserve(buckets.size());
+  for (Index v = 0; v < nv; ++v) {
+    auto first = buckets.begin() + bucket_offsets[v], last = buckets.begin() + bucket_offsets[v + 1];
+    std::sort(first, last, [](const HalfEdge& l, const HalfEdge& r) {
+      return l.other != r.other ? l.other < r.other : l.corner < r.corner;
+    });
+    for (auto it = first; it != last; ++it) {
+      if (it == first || it->other != (it - 1)->other) {
+        edge_corner_offsets_.push_back(static_cast<Index>(edge_corners_.size()));
+        edge_vertices_.push_back({v, it->other});
+      }
+      corner_edge_[it->corner] = static_cast<Index>(edge_vertices_.size()) - 1;
+      edge_corners_.push_back(it->corner);
+    }
+  }
+  edge_corner_offsets_.push_back(static_cast<Index>(edge_corners_.size()));
+}
+
+void MeshTopology::build_vertex_incidence() {
+  const Index nv = vertex_count();
+  vertex_corner_offsets_.assign(static_cast<std::size_t>(nv) + 1, 0);
+  for (Index c = 0; c < corner_count(); ++c) ++vertex_corner_offsets_[corner_vertex_[c] + 1];
+  counts_to_offsets(vertex_corner_offsets_);
+  vertex_corners_.resize(corner_vertex_.size());
+  {
+    std::vector<Index> fill(vertex_corner_offsets_.begin(), vertex_corner_offsets_.end() - 1);
+    for (Index c = 0; c < corner_count(); ++c) vertex_corners_[fill[corner_vertex_[c]]++] = c;
+  }
+
+  vertex_edge_offsets_.assign(static_cast<std::size_t>(nv) + 1, 0);
+  for (const auto& ev : edge_vertices_) {
+    ++vertex_edge_offsets_[ev[0] + 1];
+    ++vertex_edge_offsets_[ev[1] + 1];
+  }
+  counts_to_offsets(vertex_edge_offsets_);
+  vertex_edges_.resize(2 * edge_vertices_.size());
+  std::vector<Index> fill(vertex_edge_offsets_.begin(), vertex_edge_offsets_.end() - 1);
+  for (Index e = 0; e < edge_count(); ++e) {
+    vertex_edges_[fill[edge_vertices_[e][0]]++] = e;
+    vertex_edges_[fill[edge_vertices_[e][1]]++] = e;
+  }
+}
+
+// Faces at the same vertex are in one fan when they share an edge at that
+// vertex (any shared edge, manifold or not: the usual definition of a
+// non-manifold "bowtie" vertex). Works on corners, one set per fan.
+void MeshTopology::count_fans() {
+  detail::UnionFind sets(corner_count());
+  for (Index e = 0; e < edge_count(); ++e) {
+    const auto sides = edge_corners(e);
+    if (sides.size() < 2) continue;
+    for (const Index end : edge_vertices_[e]) {
+      auto corner_at = [&](Index c) { return corner_vertex_[c] == end ? c : corner_next(c); };
+      const Index first = corner_at(sides[0]);
+      for (std::size_t s = 1; s < sides.size(); ++s) sets.unite(first, corner_at(sides[s]));
+    }
+  }
+  // A face that visits v twice (a degenerate face) is still one face of the fan.
+  for (Index v = 0; v < vertex_count(); ++v) {
+    const auto corners = vertex_corners(v);  // in corner order: a face's corners are adjacent
+    for (std::size_t i = 1; i < corners.size(); ++i)
+      if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) sets.unite(corners[i], corners[i - 1]);
+  }
+  fan_count_.assign(static_cast<std::size_t>(vertex_count()), 0);
+  for (Index v = 0; v < vertex_count(); ++v)
+    for (const Index c : vertex_corners(v))
+      if (sets.find(c) == c) ++fan_count_[v];
+}
+
+void MeshTopology::classify_and_order_vertices() {
+  ring_ordered_.assign(static_cast<std::size_t>(vertex_count()), 0);
+  for (Index v = 0; v < vertex_count(); ++v) {
+    const auto corners = vertex_corners(v);
+    if (corners.empty()) continue;
+    bool manifold = fan_count_[v] == 1;
+    bool on_boundary = false;
+    for (const Index e : vertex_edges(v)) {
+      if (is_non_manifold_edge(e)) manifold = false;
+      if (is_boundary_edge(e)) on_boundary = true;
+    }
+    for (std::size_t i = 1; i < corners.size() && manifold; ++i)
+      if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) manifold = false;
+    vertex_kind_[v] = !manifold ? VertexKind::non_manifold
+                     : on_boundary ? VertexKind::boundary : VertexKind::interior;
+    if (manifold) ring_ordered_[v] = order_ring(v) ? 1 : 0;
+  }
+}
+
+// Walks counter-clockwise around v: from a face, cross the edge that enters v
+// (prev -> v) into the face that leaves v along it. Fails, leaving the
+// incidence lists in index order, when a face on the way is flipped.
+bool MeshTopology::order_ring(Index v) {
+  const auto corners = vertex_corners(v);
+  const std::size_t k = corners.size();
+  const bool boundary = vertex_kind_[v] == VertexKind::boundary;
+  Index start = corners[0];
+  if (boundary) {
+    Index found = 0;
+    for (const Index c : corners)
+      if (corner_edge_[c] != kInvalidIndex && is_boundary_edge(corner_edge_[c])) { start = c; ++found; }
+    if (found != 1) return false;
+  }
+  std::vector<Index> ring_corners, ring_edges;
+  ring_corners.reserve(k);
+  ring_edges.reserve(k + 1);
+  Index c = start;
+  while (true) {
+    if (ring_corners.size() == k || corner_edge_[c] == kInvalidIndex) return false;
+    ring_corners.push_back(c);
+    ring_edges.push_back(corner_edge_[c]);
+    const Index entering = corner_edge_[corner_prev(c)];
+    if (entering == kInvalidIndex) return false;
+    const auto sides = edge_corners(entering);
+    if (sides.size() == 1) {  // reached the other boundary edge
+      if (!boundary) return false;
+      ring_edges.push_back(entering);
+      break;
+    }
+    const Index across = sides[0] == corner_prev(c) ? sides[1] : sides[0];
+    if (corner_vertex_[across] != v) return false;  // neighbour traverses the edge the same way
+    if (across == start) break;
+    c = across;
+  }
+  if (ring_corners.size() != k || ring_edges.size() != static_cast<std::size_t>(valence(v))) return false;
+  std::copy(ring_corners.begin(), ring_corners.end(), vertex_corners_.begin() + vertex_corner_offsets_[v]);
+  std::copy(ring_edges.begin(), ring_edges.end(), vertex_edges_.begin() + vertex_edge_offsets_[v]);
+  return true;
+}
+
+bool MeshTopology::is_flipped_edge(Index e) const {
+  const auto sides = edge_corners(e);
+  if (sides.size() != 2) return false;
+  return corner_vertex_[sides[0]] == corner_vertex_[sides[1]];
+}
+
+Index MeshTopology::find_edge(Index a, Index b) const {
+  if (a < 0 || b < 0 || a >= vertex_count() || b >= vertex_count() || a == b) return kInvalidIndex;
+  const std::array<Index, 2> key{std::min(a, b), std::max(a, b)};
+  // Edges are numbered in (min, max) order, so a binary search finds them.
+  auto it = std::lower_bound(edge_vertices_.begin(), edge_vertices_.end(), key);
+  return it != edge_vertices_.end() && *it == key ? static_cast<Index>(it - edge_vertices_.begin())
+                                                  : kInvalidIndex;
+}
+
+void MeshTopology::build_boundary_loops() {
+  detail::UnionFind sets(vertex_count());
+  std::vector<Index> boundary_edges;
+  for (Index e = 0; e < edge_count(); ++e)
+    if (is_boundary_edge(e)) {
+      boundary_edges.push_back(e);
+      sets.unite(edge_vertices_[e][0], edge_vertices_[e][1]);
+    }
+  if (boundary_edges.empty()) return;
+
+  // Group boundary edges by component root; components are numbered by their
+  // smallest vertex, so the loop order is deterministic.
+  std::vector<Index> loop_of_root(static_cast<std::size_t>(vertex_count()), kInvalidIndex);
+  std::vector<std::vector<Index>> loop_edges;
+  for (const Index e : boundary_edges) {
+    const Index root = sets.find(edge_vertices_[e][0]);
+    if (loop_of_root[root] == kInvalidIndex) {
+      loop_of_root[root] = static_cast<Index>(loop_edges.size());
+      loop_edges.emplace_back();
+    }
+    loop_edges[loop_of_root[root]].push_back(e);
+  }
+
+  for (const auto& edges : loop_edges) {
+    BoundaryLoop loop;
+    // Try to follow the directed boundary half-edges (face direction) round a
+    // simple cycle: each vertex must start exactly one boundary half-edge.
+    std::vector<std::pair<Index, Index>> directed;  // (from, to)
+    for (const Index e : edges) {
+      const Index c = edge_corners(e)[0];
+      directed.emplace_back(corner_vertex_[c], corner_vertex_[corner_next(c)]);
+    }
+    std::sort(directed.begin(), directed.end());
+    bool simple = true;
+    for (std::size_t i = 1; i < directed.size(); ++i)
+      if (directed[i].first == directed[i - 1].first) simple = false;
+    if (simple) {
+      auto next_of = [&](Index from) -> Index {
+        auto it = std::lower_bound(directed.begin(), directed.end(), std::make_pair(from, Index{-1}));
+        return it != directed.end() && it->first == from ? it->second : kInvalidIndex;
+      };
+      const Index start = directed.front().first;
+      Index v = start;
+      do {
+        loop.vertices.push_back(v);
+        v = next_of(v);
+      } while (v != kInvalidIndex && v != start && loop.vertices.size() <= directed.size());
+      simple = v == start && loop.vertices.size() == directed.size();
+    }
+    loop.ordered = simple;
+    if (!simple) {
+      loop.vertices.clear();
+      for (const Index e : edges) {
+        loop.vertices.push_back(edge_vertices_[e][0]);
+        loop.vertices.push_back(edge_vertices_[e][1]);
+      }
+      std::sort(loop.vertices.begin(), loop.vertices.end());
+      loop.vertices.erase(std::unique(loop.vertices.begin(), loop.vertices.end()), loop.vertices.end());
+    }
+    boundary_loops_.push_back(std::move(loop));
+  }
+}
+
+}  // namespace subdiv

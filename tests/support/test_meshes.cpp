@@ -1,0 +1,40 @@
+#include "support/test_meshes.h"
+
+namespace subdiv::test {
+
+PolygonMesh cube() {
+  return make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                   {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
+}
+
+PolygonMesh quad_grid(int n, int m) {
+  PolygonMesh mesh;
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= n; ++i) mesh.positions.push_back({double(i), double(j), 0.0});
+  auto id = [n](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) mesh.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return mesh;
+}
+
+PolygonMesh triangle_grid(int n, int m) {
+  PolygonMesh quads = quad_grid(n, m);
+  PolygonMesh mesh;
+  mesh.positions = quads.positions;
+  for (Index f = 0; f < quads.face_count(); ++f) {
+    const auto q = quads.face(f);
+    mesh.add_face({q[0], q[1], q[2]});
+    mesh.add_face({q[0], q[2], q[3]});
+  }
+  return mesh;
+}
+
+PolygonMesh tetrahedron() {
+  return make_mesh({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}, {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}});
+}
+
+std::string data_path(const std::string& name) { return std::string(SUBDIV_TEST_DATA_DIR) + "/" + name; }
+std::string bundled_path(const std::string& name) { return std::string(SUBDIV_BUNDLED_MESH_DIR) + "/" + name; }
+std::string shared_mesh_dir() { return SUBDIV_SHARED_MESH_DIR; }
+
+}  // namespace subdiv::test

@@ -1,0 +1,21 @@
+#pragma once
+// The subcommands of the `subdiv` program. Each registers its options on the
+// CLI11 app and returns the function that runs it (returning the exit code).
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace subdiv::cli {
+
+/// Exit codes, as documented in docs/cli.md.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 1;
+inline constexpr int kExitInternal = 2;
+
+using Command = std::function<int()>;
+
+Command add_info_command(CLI::App& app);
+Command add_convert_command(CLI::App& app);
+
+}  // namespace subdiv::cli

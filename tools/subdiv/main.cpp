@@ -1,0 +1,69 @@
+// subdiv: one program, one subcommand per task. Every failure ends in one
+// line on stderr and a non-zero exit code: 1 for bad input or arguments,
+// 2 for an internal error.
+
+#include <cstdio>
+#include <new>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "subdiv/core/error.h"
+
+namespace {
+
+std::string one_line(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+void print_error(const std::string& message) { std::fprintf(stderr, "subdiv: %s\n", one_line(message).c_str()); }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace subdiv::cli;
+  CLI::App app{"subdiv: subdivision surfaces on polygon meshes", "subdiv"};
+  app.set_version_flag("--version", std::string("subdiv 0.1.0"));
+  app.require_subcommand(1);
+  app.footer(
+      "Examples:\n"
+      "  subdiv info data/meshes/cube.obj\n"
+      "  subdiv convert data/meshes/bunny.obj /tmp/bunny.ply\n"
+      "Run 'subdiv COMMAND --help' for a command's options.");
+
+  const Command info = add_info_command(app);
+  const Command convert = add_convert_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    print_error(std::string(e.what()) + " (run 'subdiv --help' for usage)");
+    return kExitBadInput;
+  }
+
+  try {
+    if (app.got_subcommand("info")) return info();
+    if (app.got_subcommand("convert")) return convert();
+    print_error("no command given (run 'subdiv --help' for usage)");
+    return kExitBadInput;
+  } catch (const subdiv::Error& e) {
+    print_error(e.what());
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    print_error("internal error: out of memory");
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    print_error(std::string("internal error: ") + e.what());
+    return kExitInternal;
+  }
+}
