@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 
 #include "subdiv/core/error.h"
@@ -45,7 +44,6 @@ std::vector<ManifestRow> read_manifest(const fs::path& path) {
   std::vector<ManifestRow> rows;
   std::ifstream in(path);
   std::string line;
-  const std::regex note(R"((nmv|iso|flip|degen|cc|chi)=(-?\d+))");
   while (std::getline(in, line)) {
     const auto c = cells(line);
     if (c.size() < 11 || c[0].size() < 5 || c[0].substr(c[0].size() - 4) != ".obj") continue;
@@ -57,8 +55,16 @@ std::vector<ManifestRow> read_manifest(const fs::path& path) {
     r.boundary_loops = std::stoll(c[6]);
     r.nm_edges = std::stoll(c[7]);
     r.max_valence = std::stoll(c[8]);
-    for (std::sregex_iterator it(c[10].begin(), c[10].end(), note), end; it != end; ++it)
-      r.notes[(*it)[1]] = std::stoll((*it)[2]);
+    // Notes read like "nmv=2 flip=10 cc=1 chi=-4" after free text.
+    std::stringstream words(c[10]);
+    std::string word;
+    while (words >> word) {
+      const auto eq = word.find('=');
+      if (eq == std::string::npos) continue;
+      const std::string key = word.substr(0, eq);
+      if (key == "nmv" || key == "iso" || key == "flip" || key == "degen" || key == "cc" || key == "chi")
+        r.notes[key] = std::stoll(word.substr(eq + 1));
+    }
     rows.push_back(r);
   }
   return rows;
