@@ -24,9 +24,14 @@ std::string read_file(const std::filesystem::path& path) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) throw IoError(path.string() + ": cannot open: " + reason());
   std::string data;
+  // Read in one go when the size is known; grow by chunks otherwise (pipes).
+  struct stat info {};
+  if (::fstat(::fileno(file), &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
+    data.resize(static_cast<std::size_t>(info.st_size));
+    data.resize(std::fread(data.data(), 1, data.size(), file));
+  }
   char buffer[1 << 16];
   std::size_t n;
-  // Grow by reading rather than trusting a size query: works for pipes too.
   while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) data.append(buffer, n);
   const bool failed = std::ferror(file) != 0;
   std::fclose(file);

@@ -108,6 +108,7 @@ class ObjParser {
   // indices are range-checked at the end of the file (forward references are
   // tolerated); relative ones must point at an element already read.
   long long resolve(long long index, std::size_t count_so_far, const char* what) const {
+    if (index > 0 && index <= kMaxElements) [[likely]] return index - 1;
     if (index == 0) fail(std::string(what) + " index 0 is invalid (OBJ indices start at 1)");
     if (index < 0) {
       const long long resolved = static_cast<long long>(count_so_far) + index;

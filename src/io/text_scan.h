@@ -43,16 +43,25 @@ class LineScanner {
     p_ = result.ptr;
     return true;
   }
-  /// Parses an integer that may be followed by `stop` (e.g. '/') as well as
-  /// by whitespace. False on overflow or if no digits are there.
+  /// Parses a decimal integer that may be followed by `stop` (e.g. '/') as
+  /// well as by whitespace. False on overflow or if no digits are there.
+  /// Hand-written: std::from_chars was a quarter of OBJ parsing time.
   bool integer(long long& value, char stop = ' ') {
     skip_spaces();
-    const char* start = p_;
-    if (start != end_ && *start == '+') ++start;
-    const auto result = std::from_chars(start, end_, value);
-    if (result.ec != std::errc()) return false;
-    if (result.ptr != end_ && !is_space(*result.ptr) && *result.ptr != stop) return false;
-    p_ = result.ptr;
+    const char* q = p_;
+    bool negative = false;
+    if (q != end_ && (*q == '-' || *q == '+')) negative = *q++ == '-';
+    const char* digits = q;
+    unsigned long long magnitude = 0;
+    while (q != end_ && static_cast<unsigned char>(*q - '0') < 10) {
+      if (q - digits == 18) return false;  // 18 digits always fit; refuse longer
+      magnitude = magnitude * 10 + static_cast<unsigned>(*q - '0');
+      ++q;
+    }
+    if (q == digits) return false;
+    if (q != end_ && !is_space(*q) && *q != stop) return false;
+    value = negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
+    p_ = q;
     return true;
   }
   bool consume(char c) {
