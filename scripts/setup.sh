@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libtbb-dev libcli11-dev libfmt-dev libfast-float-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libassimp-dev  # the peer in bench/ (OBJ and PLY import speed)
+  libassimp-dev libosd-dev  # peers in bench/ (Assimp import, OpenSubdiv topology)
 )
 
 missing=()

@@ -128,6 +128,7 @@ void MeshTopology::count_fans() {
 
 void MeshTopology::classify_and_order_vertices() {
   ring_ordered_.assign(static_cast<std::size_t>(vertex_count()), 0);
+  std::vector<Index> ring_corners, ring_edges;  // scratch, reused for every vertex
   for (Index v = 0; v < vertex_count(); ++v) {
     const auto corners = vertex_corners(v);
     if (corners.empty()) continue;
@@ -141,14 +142,14 @@ void MeshTopology::classify_and_order_vertices() {
       if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) manifold = false;
     vertex_kind_[v] = !manifold ? VertexKind::non_manifold
                      : on_boundary ? VertexKind::boundary : VertexKind::interior;
-    if (manifold) ring_ordered_[v] = order_ring(v) ? 1 : 0;
+    if (manifold) ring_ordered_[v] = order_ring(v, ring_corners, ring_edges) ? 1 : 0;
   }
 }
 
 // Walks counter-clockwise around v: from a face, cross the edge that enters v
 // (prev -> v) into the face that leaves v along it. Fails, leaving the
 // incidence lists in index order, when a face on the way is flipped.
-bool MeshTopology::order_ring(Index v) {
+bool MeshTopology::order_ring(Index v, std::vector<Index>& ring_corners, std::vector<Index>& ring_edges) {
   const auto corners = vertex_corners(v);
   const std::size_t k = corners.size();
   const bool boundary = vertex_kind_[v] == VertexKind::boundary;
@@ -159,9 +160,8 @@ bool MeshTopology::order_ring(Index v) {
       if (corner_edge_[c] != kInvalidIndex && is_boundary_edge(corner_edge_[c])) { start = c; ++found; }
     if (found != 1) return false;
   }
-  std::vector<Index> ring_corners, ring_edges;
-  ring_corners.reserve(k);
-  ring_edges.reserve(k + 1);
+  ring_corners.clear();
+  ring_edges.clear();
   Index c = start;
   while (true) {
     if (ring_corners.size() == k || corner_edge_[c] == kInvalidIndex) return false;

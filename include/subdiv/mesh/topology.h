@@ -104,7 +104,7 @@ class MeshTopology {
   void build_vertex_incidence();
   void count_fans();
   void classify_and_order_vertices();
-  bool order_ring(Index v);
+  bool order_ring(Index v, std::vector<Index>& ring_corners, std::vector<Index>& ring_edges);
   void build_boundary_loops();
 
   std::vector<Index> face_offsets_;
