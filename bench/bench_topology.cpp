@@ -9,8 +9,7 @@
 namespace subdiv::bench {
 namespace {
 
-void BM_BuildTopology_Quads(benchmark::State& state) {
-  const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
+void build_topology(benchmark::State& state, const PolygonMesh& mesh) {
   for (auto _ : state) {
     MeshTopology t(mesh);
     benchmark::DoNotOptimize(t.edge_count());
@@ -18,16 +17,12 @@ void BM_BuildTopology_Quads(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * mesh.face_count());
   state.counters["faces"] = mesh.face_count();
 }
+
+void BM_BuildTopology_Quads(benchmark::State& state) { build_topology(state, torus(static_cast<int>(state.range(0)))); }
 BENCHMARK(BM_BuildTopology_Quads)->Arg(250)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 void BM_BuildTopology_Triangles(benchmark::State& state) {
-  const PolygonMesh mesh = triangulated_torus(static_cast<int>(state.range(0)));
-  for (auto _ : state) {
-    MeshTopology t(mesh);
-    benchmark::DoNotOptimize(t.edge_count());
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * mesh.face_count());
-  state.counters["faces"] = mesh.face_count();
+  build_topology(state, triangulated_torus(static_cast<int>(state.range(0))));
 }
 BENCHMARK(BM_BuildTopology_Triangles)->Arg(707)->Unit(benchmark::kMillisecond);
 

@@ -14,10 +14,9 @@ namespace subdiv {
 namespace {
 
 using detail::LineScanner;
+using detail::clamp_line;
+using detail::printable;
 
-std::uint32_t clamp_line(std::uint64_t line) {
-  return static_cast<std::uint32_t>(std::min<std::uint64_t>(line, std::numeric_limits<std::uint32_t>::max()));
-}
 
 class ObjParser {
  public:
@@ -61,7 +60,7 @@ class ObjParser {
     if (!s.number(value)) {
       const std::string_view tok = s.token();
       fail(tok.empty() ? std::string("missing ") + what
-                       : std::string("bad ") + what + " '" + std::string(tok.substr(0, 40)) + "'");
+                       : std::string("bad ") + what + " '" + printable(tok) + "'");
     }
     return value;
   }
@@ -125,7 +124,7 @@ class ObjParser {
     auto& corners = out_.mesh.face_indices;
     while (!s.at_end()) {
       long long v;
-      if (!s.integer(v, '/')) fail("bad face vertex '" + std::string(s.token().substr(0, 40)) + "'");
+      if (!s.integer(v, '/')) fail("bad face vertex '" + printable(s.token()) + "'");
       long long vt = 0, vn = 0;
       if (s.consume('/')) {
         if (s.peek() != '/' && !s.integer(vt, '/')) fail("bad texture index in face");

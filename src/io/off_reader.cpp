@@ -16,18 +16,10 @@ namespace subdiv {
 namespace {
 
 using detail::LineScanner;
+using detail::clamp_line;
+using detail::printable;
 
-std::string printable(std::string_view s) {
-  std::string out(s.substr(0, 40));
-  for (char& c : out)
-    if (c < ' ' || c > '~') c = '?';
-  if (s.size() > 40) out += "...";
-  return out;
-}
 
-std::uint32_t clamp_line(std::uint64_t line) {
-  return static_cast<std::uint32_t>(std::min<std::uint64_t>(line, std::numeric_limits<std::uint32_t>::max()));
-}
 
 struct Token {
   std::string_view text;  ///< empty at the end of the file

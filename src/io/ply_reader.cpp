@@ -21,6 +21,8 @@ namespace {
 
 using detail::LineReader;
 using detail::LineScanner;
+using detail::clamp_line;
+using detail::printable;
 
 enum class Scalar : std::uint8_t { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
 
@@ -74,18 +76,7 @@ struct Element {
   std::uint64_t line = 0;  ///< header line of the declaration
 };
 
-/// At most 40 characters of `s`, with anything unprintable shown as '?'.
-std::string printable(std::string_view s) {
-  std::string out(s.substr(0, 40));
-  for (char& c : out)
-    if (c < ' ' || c > '~') c = '?';
-  if (s.size() > 40) out += "...";
-  return out;
-}
 
-std::uint32_t clamp_line(std::uint64_t line) {
-  return static_cast<std::uint32_t>(std::min<std::uint64_t>(line, std::numeric_limits<std::uint32_t>::max()));
-}
 
 std::string describe(const Element& e, std::uint64_t index) { return e.name + " " + std::to_string(index); }
 

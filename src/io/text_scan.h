@@ -4,12 +4,29 @@
 
 #include <charconv>
 #include <cstring>
+#include <algorithm>
 #include <cstdint>
+#include <limits>
+#include <string>
 #include <string_view>
 
 #include <fast_float/fast_float.h>
 
 namespace subdiv::detail {
+
+/// At most 40 characters of `s` for an error message, unprintable bytes as '?'.
+inline std::string printable(std::string_view s) {
+  std::string out(s.substr(0, 40));
+  for (char& c : out)
+    if (c < ' ' || c > '~') c = '?';
+  if (s.size() > 40) out += "...";
+  return out;
+}
+
+/// Line numbers are stored in 32 bits; later lines saturate.
+inline std::uint32_t clamp_line(std::uint64_t line) {
+  return static_cast<std::uint32_t>(std::min<std::uint64_t>(line, std::numeric_limits<std::uint32_t>::max()));
+}
 
 inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -54,13 +71,16 @@ class LineScanner {
     const char* digits = q;
     unsigned long long magnitude = 0;
     while (q != end_ && static_cast<unsigned char>(*q - '0') < 10) {
-      if (q - digits == 18) return false;  // 18 digits always fit; refuse longer
+      if (q - digits == 19) return false;  // 19 digits fit in 64 unsigned bits; refuse longer
       magnitude = magnitude * 10 + static_cast<unsigned>(*q - '0');
       ++q;
     }
     if (q == digits) return false;
     if (q != end_ && !is_space(*q) && *q != stop) return false;
-    value = negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
+    constexpr auto max = static_cast<unsigned long long>(std::numeric_limits<long long>::max());
+    if (magnitude > max + (negative ? 1 : 0)) return false;
+    value = negative && magnitude == max + 1 ? std::numeric_limits<long long>::min()
+          : negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
     p_ = q;
     return true;
   }

@@ -7,25 +7,11 @@
 #include <vector>
 
 #include "subdiv/core/error.h"
+#include "support/test_meshes.h"
 #include "subdiv/io/off.h"
 
 namespace subdiv {
 namespace {
-
-PolygonMesh cube() {
-  return make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
-                   {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
-}
-
-PolygonMesh mixed() {
-  return make_mesh({{0.1, 1.0 / 3.0, -2.5e-300},
-                    {1e300, -0.7, 2.0 / 7.0},
-                    {3.141592653589793, 2.718281828459045, -1.4142135623730951},
-                    {123456789.123456789, -0.0, 5e-324},
-                    {0.30000000000000004, 7, -8},
-                    {1.7976931348623157e308, 9.5, 10.25}},
-                   {{0, 1, 2}, {0, 2, 3, 4}, {1, 5, 4, 3, 2}});
-}
 
 void expect_same_geometry(const PolygonMesh& a, const PolygonMesh& b) {
   ASSERT_EQ(a.positions.size(), b.positions.size());
@@ -66,11 +52,11 @@ void expect_triangle(const MeshFile& file) {
 
 TEST(Off, CubeRoundTrips) {
   std::vector<std::string> warnings;
-  const std::string text = format_off(cube(), &warnings);
+  const std::string text = format_off(test::cube(), &warnings);
   EXPECT_TRUE(warnings.empty());
   EXPECT_EQ(text.rfind("OFF\n8 6 0\n0 0 0\n", 0), 0u);
   const MeshFile file = parse_off(text, "cube.off");
-  expect_same_geometry(cube(), file.mesh);
+  expect_same_geometry(test::cube(), file.mesh);
   EXPECT_TRUE(file.warnings.empty());
   EXPECT_EQ(file.lines.path, "cube.off");
   EXPECT_EQ(file.lines.vertex_lines.size(), 8u);
@@ -79,7 +65,7 @@ TEST(Off, CubeRoundTrips) {
 }
 
 TEST(Off, MixedFacesRoundTripExactly) {
-  expect_same_geometry(mixed(), parse_off(format_off(mixed())).mesh);
+  expect_same_geometry(test::hard_numbers_mesh(), parse_off(format_off(test::hard_numbers_mesh())).mesh);
 }
 
 TEST(Off, EmptyMeshRoundTrips) {
@@ -89,7 +75,7 @@ TEST(Off, EmptyMeshRoundTrips) {
 }
 
 TEST(Off, ChannelsAreReportedNotWritten) {
-  PolygonMesh mesh = cube();
+  PolygonMesh mesh = test::cube();
   mesh.vertex_channels.push_back({"color", 3, std::vector<double>(24, 0.5)});
   mesh.face_varying_channels.push_back({"uv", 2, {0, 0}, std::vector<Index>(24, 0)});
   std::vector<std::string> warnings;
@@ -97,7 +83,7 @@ TEST(Off, ChannelsAreReportedNotWritten) {
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_NE(warnings[0].find("vertex channel 'color'"), std::string::npos);
   EXPECT_NE(warnings[1].find("face-varying channel 'uv'"), std::string::npos);
-  EXPECT_EQ(text, format_off(cube()));
+  EXPECT_EQ(text, format_off(test::cube()));
 }
 
 // --- variants ------------------------------------------------------------------------
@@ -254,7 +240,7 @@ TEST(OffErrors, GarbageBytes) {
 
 TEST(OffErrors, CorruptedFilesOnlyThrowParseError) {
   const std::vector<std::string> inputs{
-      format_off(mixed()), "STCNOFF\n3 1 0\n0 0 0 0 0 1 1 0 0 1 0 0\n1 0 0 0 0 1 0 1 0 1 1 0\n0 1 0.5 0 0 1 0 0 1 1 0 1\n3 0 1 2\n",
+      format_off(test::hard_numbers_mesh()), "STCNOFF\n3 1 0\n0 0 0 0 0 1 1 0 0 1 0 0\n1 0 0 0 0 1 0 1 0 1 1 0\n0 1 0.5 0 0 1 0 0 1 1 0 1\n3 0 1 2\n",
       "nOFF 4\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0.5 1\n3 0 1 2 # c\n"};
   std::mt19937 rng(99);
   for (const std::string& input : inputs) {

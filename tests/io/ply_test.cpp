@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "subdiv/core/error.h"
+#include "support/test_meshes.h"
 #include "subdiv/io/ply.h"
 
 namespace subdiv {
@@ -25,22 +26,6 @@ const char* name(PlyEncoding e) {
     case PlyEncoding::binary_big_endian: return "binary_big_endian";
   }
   return "?";
-}
-
-PolygonMesh cube() {
-  return make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
-                   {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
-}
-
-// Coordinates that only round-trip if every digit is kept.
-PolygonMesh mixed() {
-  return make_mesh({{0.1, 1.0 / 3.0, -2.5e-300},
-                    {1e300, -0.7, 2.0 / 7.0},
-                    {3.141592653589793, 2.718281828459045, -1.4142135623730951},
-                    {123456789.123456789, -0.0, 5e-324},
-                    {0.30000000000000004, 7, -8},
-                    {1.7976931348623157e308, 9.5, 10.25}},
-                   {{0, 1, 2}, {0, 2, 3, 4}, {1, 5, 4, 3, 2}});
 }
 
 void expect_same_geometry(const PolygonMesh& a, const PolygonMesh& b) {
@@ -101,7 +86,7 @@ std::string parse_error_message(F&& f) {
 // --- round trips ---------------------------------------------------------------
 
 TEST(Ply, CubeRoundTripsInEveryEncoding) {
-  const PolygonMesh mesh = cube();
+  const PolygonMesh mesh = test::cube();
   for (const PlyEncoding e : kAllEncodings) {
     SCOPED_TRACE(name(e));
     std::vector<std::string> warnings;
@@ -119,7 +104,7 @@ TEST(Ply, CubeRoundTripsInEveryEncoding) {
 }
 
 TEST(Ply, MixedFacesRoundTripExactly) {
-  const PolygonMesh mesh = mixed();
+  const PolygonMesh mesh = test::hard_numbers_mesh();
   for (const PlyEncoding e : kAllEncodings) {
     SCOPED_TRACE(name(e));
     const MeshFile file = parse_ply(format_ply(mesh, e));
@@ -128,7 +113,7 @@ TEST(Ply, MixedFacesRoundTripExactly) {
 }
 
 TEST(Ply, AsciiRecordsLinesAndBinaryDoesNot) {
-  const PolygonMesh mesh = mixed();
+  const PolygonMesh mesh = test::hard_numbers_mesh();
   const MeshFile ascii = parse_ply(format_ply(mesh, PlyEncoding::ascii));
   // 10 header lines (ply, format, comment, element, 3 properties, element,
   // property, end_header), then 6 vertices and 3 faces.
@@ -140,7 +125,7 @@ TEST(Ply, AsciiRecordsLinesAndBinaryDoesNot) {
 }
 
 TEST(Ply, ChannelsRoundTrip) {
-  PolygonMesh mesh = cube();
+  PolygonMesh mesh = test::cube();
   std::vector<double> normals, uvs, colors;
   for (int v = 0; v < 8; ++v) {
     normals.insert(normals.end(), {0.5 * v, -0.25, 1.0 / 1024.0});
@@ -180,7 +165,7 @@ TEST(Ply, ColorsAreClampedAndRounded) {
 }
 
 TEST(Ply, UnsupportedChannelsAreReported) {
-  PolygonMesh mesh = cube();
+  PolygonMesh mesh = test::cube();
   mesh.vertex_channels.push_back({"weight", 1, std::vector<double>(8, 1.0)});
   mesh.vertex_channels.push_back({"normal", 2, std::vector<double>(16, 1.0)});  // wrong component count
   FaceVaryingChannel fv{"uv", 2, {0, 0, 1, 1}, std::vector<Index>(24, 0)};
@@ -417,7 +402,7 @@ TEST(Ply, SmallFacesAreAccepted) {
 }
 
 TEST(Ply, BinaryTrailingBytesAreAWarning) {
-  std::string data = format_ply(cube(), PlyEncoding::binary_little_endian);
+  std::string data = format_ply(test::cube(), PlyEncoding::binary_little_endian);
   data += "junk";
   const MeshFile file = parse_ply(data);
   EXPECT_EQ(file.mesh.face_count(), 6);
@@ -426,17 +411,17 @@ TEST(Ply, BinaryTrailingBytesAreAWarning) {
 }
 
 TEST(Ply, EndHeaderWithCrLfBeforeBinaryData) {
-  std::string data = format_ply(cube(), PlyEncoding::binary_big_endian);
+  std::string data = format_ply(test::cube(), PlyEncoding::binary_big_endian);
   const std::size_t at = data.find("end_header\n");
   ASSERT_NE(at, std::string::npos);
   data.replace(at, 11, "end_header\r\n");
-  expect_same_geometry(cube(), parse_ply(data).mesh);
+  expect_same_geometry(test::cube(), parse_ply(data).mesh);
 }
 
 // --- errors ------------------------------------------------------------------------
 
 TEST(PlyErrors, TruncatedBinary) {
-  const std::string data = format_ply(cube(), PlyEncoding::binary_little_endian);
+  const std::string data = format_ply(test::cube(), PlyEncoding::binary_little_endian);
   const std::size_t header = data.find("end_header\n") + 11;
   EXPECT_PARSE_ERROR(parse_ply(data.substr(0, data.size() - 3), "t.ply"), "unexpected end of file in face 5");
   // A list count whose items are missing.
@@ -463,11 +448,11 @@ TEST(PlyErrors, TruncatedBinary) {
 }
 
 TEST(PlyErrors, TruncatedAscii) {
-  const std::string data = format_ply(cube(), PlyEncoding::ascii);
+  const std::string data = format_ply(test::cube(), PlyEncoding::ascii);
   // Last line cut in the middle of the face.
   EXPECT_PARSE_ERROR(parse_ply(data.substr(0, data.size() - 4), "t.ply"), "t.ply:24: face 5: the line ends before");
   // Whole lines missing (blank lines after them keep the size check quiet).
-  const std::string text = format_ply(mixed(), PlyEncoding::ascii);
+  const std::string text = format_ply(test::hard_numbers_mesh(), PlyEncoding::ascii);
   std::size_t cut = 0;
   for (int line = 0; line < 10 + 4; ++line) cut = text.find('\n', cut) + 1;
   EXPECT_PARSE_ERROR(parse_ply(text.substr(0, cut) + std::string(200, '\n'), "t.ply"), "t.ply: unexpected end of file in vertex 4");
@@ -602,7 +587,7 @@ TEST(PlyErrors, GarbageBytes) {
                                "property float z\nend_header\n1 2 zebra\n"),
                      ":8: vertex 0: bad value 'zebra' for property 'z'");
   // Trailing garbage after ascii data.
-  EXPECT_PARSE_ERROR(parse_ply(format_ply(cube(), PlyEncoding::ascii) + "\n\nxyz\n"),
+  EXPECT_PARSE_ERROR(parse_ply(format_ply(test::cube(), PlyEncoding::ascii) + "\n\nxyz\n"),
                      ":27: unexpected data after the last element");
   // Too many values on a line.
   EXPECT_PARSE_ERROR(parse_ply("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
@@ -613,7 +598,7 @@ TEST(PlyErrors, GarbageBytes) {
 // Every prefix and many corrupted variants of valid files either parse or
 // throw ParseError: nothing else escapes, nothing crashes or hangs.
 TEST(PlyErrors, CorruptedFilesOnlyThrowParseError) {
-  PolygonMesh mesh = mixed();
+  PolygonMesh mesh = test::hard_numbers_mesh();
   mesh.vertex_channels.push_back({"normal", 3, std::vector<double>(18, 0.5)});
   mesh.vertex_channels.push_back({"color", 3, std::vector<double>(18, 0.5)});
   std::vector<std::string> inputs{rich_binary(false), rich_binary(true)};

@@ -33,6 +33,16 @@ PolygonMesh tetrahedron() {
   return make_mesh({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}, {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}});
 }
 
+PolygonMesh hard_numbers_mesh() {
+  return make_mesh({{0.1, 1.0 / 3.0, -2.5e-300},
+                    {1e300, -0.7, 2.0 / 7.0},
+                    {3.141592653589793, 2.718281828459045, -1.4142135623730951},
+                    {123456789.123456789, -0.0, 5e-324},
+                    {0.30000000000000004, 7, -8},
+                    {1.7976931348623157e308, 9.5, 10.25}},
+                   {{0, 1, 2}, {0, 2, 3, 4}, {1, 5, 4, 3, 2}});
+}
+
 std::string data_path(const std::string& name) { return std::string(SUBDIV_TEST_DATA_DIR) + "/" + name; }
 std::string bundled_path(const std::string& name) { return std::string(SUBDIV_BUNDLED_MESH_DIR) + "/" + name; }
 std::string shared_mesh_dir() { return SUBDIV_SHARED_MESH_DIR; }

@@ -15,6 +15,9 @@ PolygonMesh quad_grid(int n, int m);
 PolygonMesh triangle_grid(int n, int m);
 /// Regular tetrahedron.
 PolygonMesh tetrahedron();
+/// Triangle, quad and pentagon over coordinates that round-trip only if every
+/// digit is kept (thirds, 1e300, denormals, -0.0, the largest double).
+PolygonMesh hard_numbers_mesh();
 
 std::string data_path(const std::string& name);     ///< tests/data/<name>
 std::string bundled_path(const std::string& name);  ///< data/meshes/<name>

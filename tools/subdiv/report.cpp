@@ -79,7 +79,7 @@ std::string format_validation(const ValidationReport& report, const std::string&
   for (int k = 0; k < kIssueKindCount; ++k) {
     const auto kind = static_cast<IssueKind>(k);
     if (report.count(kind) > 0)
-      out += fmt::format("  {:<26}{}\n", to_string(kind), report.count(kind));
+      out += fmt::format("  {:<33}{}\n", to_string(kind), report.count(kind));
   }
   std::size_t listed = 0;
   for (const auto& issue : report.issues) {
