@@ -18,6 +18,7 @@ const char* to_string(IssueKind k) {
     case IssueKind::non_manifold_vertex: return "non-manifold vertex";
     case IssueKind::inconsistent_orientation: return "inconsistent orientation";
     case IssueKind::invalid_tag: return "invalid tag";
+    case IssueKind::invalid_channel: return "invalid data channel";
     case IssueKind::isolated_vertex: return "isolated vertex";
   }
   return "?";
@@ -131,6 +132,38 @@ bool check_elements(const PolygonMesh& mesh, const SourceLines* lines, Reporter&
   return in_range;
 }
 
+void check_channels(const PolygonMesh& mesh, Reporter& out) {
+  const auto nv = static_cast<std::size_t>(mesh.vertex_count());
+  for (Index i = 0; i < static_cast<Index>(mesh.vertex_channels.size()); ++i) {
+    const VertexChannel& ch = mesh.vertex_channels[static_cast<std::size_t>(i)];
+    if (ch.components <= 0 || ch.values.size() != nv * static_cast<std::size_t>(ch.components))
+      out.add(IssueKind::invalid_channel, i, 0,
+              "vertex channel '" + ch.name + "' has " + std::to_string(ch.values.size()) + " values for " +
+                  std::to_string(nv) + " vertices of " + std::to_string(ch.components) + " components");
+  }
+  for (Index i = 0; i < static_cast<Index>(mesh.face_varying_channels.size()); ++i) {
+    const FaceVaryingChannel& ch = mesh.face_varying_channels[static_cast<std::size_t>(i)];
+    const std::string name = "face-varying channel '" + ch.name + "'";
+    if (ch.components <= 0 || ch.values.size() % static_cast<std::size_t>(ch.components) != 0) {
+      out.add(IssueKind::invalid_channel, i, 0, name + " has a value count that is not a multiple of its components");
+      continue;
+    }
+    if (ch.indices.size() != mesh.face_indices.size()) {
+      out.add(IssueKind::invalid_channel, i, 0,
+              name + " has " + std::to_string(ch.indices.size()) + " indices for " +
+                  std::to_string(mesh.face_indices.size()) + " face corners");
+      continue;
+    }
+    for (std::size_t c = 0; c < ch.indices.size(); ++c)
+      if (ch.indices[c] < 0 || ch.indices[c] >= ch.value_count()) {
+        out.add(IssueKind::invalid_channel, i, 0,
+                name + " corner " + std::to_string(c) + " refers to value " + str(ch.indices[c]) + ", outside [0, " +
+                    str(ch.value_count()) + ")");
+        break;
+      }
+  }
+}
+
 void check_topology(const PolygonMesh& mesh, const MeshTopology& topo, const SourceLines* lines,
                     Reporter& out) {
   auto face_line = [&](Index f) { return line_of(&SourceLines::face_lines, lines, f); };
@@ -200,6 +233,7 @@ void check_tags(const PolygonMesh& mesh, const MeshTopology* topo, const SourceL
 ValidationReport validate(const PolygonMesh& mesh, const SourceLines* lines, const ValidationOptions& options) {
   ValidationReport report;
   Reporter out(report, options);
+  check_channels(mesh, out);
   if (!check_elements(mesh, lines, out)) {
     check_tags(mesh, nullptr, lines, out);
     return report;
@@ -214,6 +248,7 @@ ValidationReport validate(const PolygonMesh& mesh, const MeshTopology& topology,
                           const ValidationOptions& options) {
   ValidationReport report;
   Reporter out(report, options);
+  check_channels(mesh, out);
   check_elements(mesh, lines, out);
   check_topology(mesh, topology, lines, out);
   check_tags(mesh, &topology, lines, out);

@@ -119,6 +119,20 @@ TEST(Validation, BadTagValues) {
   EXPECT_TRUE(contains(r.issues[3].message, "hole tag 0 refers to face 6")) << r.issues[3].message;
 }
 
+TEST(Validation, ChannelsThatDoNotFitTheMesh) {
+  PolygonMesh mesh = test::cube();
+  mesh.vertex_channels.push_back({"color", 3, std::vector<double>(21, 0.0)});
+  mesh.face_varying_channels.push_back({"uv", 2, {0, 0, 1, 1}, std::vector<Index>(24, 0)});
+  mesh.face_varying_channels.back().indices[5] = 2;
+  mesh.face_varying_channels.push_back({"st", 2, {0, 0}, std::vector<Index>(23, 0)});
+  const auto r = validate(mesh);
+  EXPECT_EQ(r.count(IssueKind::invalid_channel), 3u);
+  ASSERT_EQ(r.issues.size(), 3u);
+  EXPECT_EQ(r.issues[0].message, "vertex channel 'color' has 21 values for 8 vertices of 3 components");
+  EXPECT_EQ(r.issues[1].message, "face-varying channel 'uv' corner 5 refers to value 2, outside [0, 2)");
+  EXPECT_EQ(r.issues[2].message, "face-varying channel 'st' has 23 indices for 24 face corners");
+}
+
 TEST(Validation, OutOfRangeIndicesAreReportedNotThrown) {
   PolygonMesh mesh = test::cube();
   mesh.face_indices[3] = 100;

@@ -25,9 +25,10 @@ enum class IssueKind : std::uint8_t {
   non_manifold_vertex,      ///< the faces around a vertex form several fans
   inconsistent_orientation, ///< two faces traverse their shared edge the same way
   invalid_tag,              ///< a tag names a missing edge, vertex or face, or a bad value
+  invalid_channel,          ///< a data channel's size or indices do not fit the mesh
   isolated_vertex,          ///< a vertex used by no face (a warning)
 };
-inline constexpr int kIssueKindCount = 9;
+inline constexpr int kIssueKindCount = 10;
 
 enum class Severity : std::uint8_t { warning, error };
 
