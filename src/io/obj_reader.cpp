@@ -17,7 +17,6 @@ using detail::LineScanner;
 using detail::clamp_line;
 using detail::printable;
 
-
 class ObjParser {
  public:
   ObjParser(std::string_view text, const std::string& path) : text_(text), path_(path) {}

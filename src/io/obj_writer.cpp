@@ -108,6 +108,7 @@ void append_tags(std::string& out, const Tags& tags) {
 }  // namespace
 
 std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options, std::vector<std::string>* warnings) {
+  check_indices(mesh);  // channel indices are dereferenced below
   std::string out;
   out.reserve(static_cast<std::size_t>(mesh.vertex_count()) * 40 + static_cast<std::size_t>(mesh.corner_count()) * 8);
   out += "# subdiv OBJ: ";

@@ -19,8 +19,6 @@ using detail::LineScanner;
 using detail::clamp_line;
 using detail::printable;
 
-
-
 struct Token {
   std::string_view text;  ///< empty at the end of the file
   std::uint64_t line = 0;

@@ -76,8 +76,6 @@ struct Element {
   std::uint64_t line = 0;  ///< header line of the declaration
 };
 
-
-
 std::string describe(const Element& e, std::uint64_t index) { return e.name + " " + std::to_string(index); }
 
 // --- data sources ----------------------------------------------------------

@@ -197,6 +197,13 @@ TEST(ObjWriter, RoundTripIsExact) {
   EXPECT_EQ(back.mesh.tags, expected);
 }
 
+TEST(ObjWriter, RefusesMalformedMeshes) {
+  PolygonMesh mesh = test::cube();
+  mesh.face_varying_channels.push_back({"uv", 2, {0, 0}, std::vector<Index>(24, 0)});
+  mesh.face_varying_channels[0].indices[3] = 7;
+  EXPECT_THROW(format_obj(mesh), InvalidInputError);
+}
+
 TEST(ObjWriter, WarnsAboutChannelsItCannotHold) {
   PolygonMesh mesh = test::cube();
   mesh.vertex_channels.push_back({"weight", 1, std::vector<double>(8, 1.0)});

@@ -31,6 +31,7 @@ namespace subdiv {
 MeshFile parse_obj(std::string_view text, const std::string& path = {});
 
 /// Serialises a mesh as OBJ text (shortest round-trip decimal numbers).
+/// Throws InvalidInputError if the mesh's index arrays or channels are malformed.
 std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options = {},
                        std::vector<std::string>* warnings = nullptr);
 
