@@ -1,0 +1,57 @@
+#pragma once
+// Uniform refinement: the fast path (positions and vertex channels written
+// directly from the masks) and the stencil path (the same masks recorded as
+// tables), level by level. Each level is a complete mesh.
+
+#include <optional>
+#include <vector>
+
+#include "subdiv/mesh/polygon_mesh.h"
+#include "subdiv/mesh/source_lines.h"
+#include "subdiv/refine/stencil_table.h"
+#include "subdiv/rules/scheme.h"
+
+namespace subdiv {
+
+struct RefineOptions {
+  int levels = 1;
+  /// Overrides the mesh's `interpolateboundary` tag; `none` is not supported.
+  std::optional<BoundaryInterpolation> boundary;
+  /// Refine meshes with non-manifold edges or vertices (and inconsistently
+  /// oriented faces), treating those elements as infinitely sharp, as
+  /// OpenSubdiv does. Otherwise they are rejected.
+  bool allow_non_manifold = false;
+  /// Worker threads; 0 = all available. Results are identical for any count.
+  int threads = 0;
+};
+
+/// Per-level classification that every scheme's masks read: which edges are
+/// sharp (boundary, non-manifold, flipped, or tagged infinitely sharp) and
+/// which vertex rule applies.
+struct LevelClassification {
+  std::vector<std::uint8_t> edge_sharp;
+  std::vector<VertexRule> vertex_rule;
+};
+LevelClassification classify_level(const PolygonMesh& mesh, const MeshTopology& topology,
+                                   BoundaryInterpolation boundary);
+
+/// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined
+/// with `scheme` under `options`; the message names the offending element.
+void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                     const SourceLines* lines = nullptr);
+
+/// The mesh after options.levels uniform steps: positions and every vertex
+/// channel through the scheme's masks, face-varying channels linearly within
+/// faces, tags propagated. Validates the input first (check_refinable).
+PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {});
+
+/// The same refinement recorded as stencil tables, one per level (level i-1
+/// -> level i). `final_level`, if given, receives the last level's mesh with
+/// positions evaluated through the tables.
+std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme,
+                                          const RefineOptions& options = {}, PolygonMesh* final_level = nullptr);
+
+/// Composes per-level tables into one: coarse -> last level.
+StencilTable compose(const std::vector<StencilTable>& levels);
+
+}  // namespace subdiv

@@ -1,0 +1,49 @@
+#pragma once
+// Topology refinement rules (Zorin's survey, section 3.1): how a level's
+// faces are split into the next level's, independent of any scheme.
+//
+//   quad split (QP, arity 2): every n-gon -> n quads around a new face point;
+//     child vertices are numbered [face points | edge points | vertex points].
+//   triangle split (TP, arity 2): every triangle -> 4 triangles;
+//     child vertices are numbered [edge points | vertex points].
+//
+// The child is a complete PolygonMesh (faces, tags, face-varying indices);
+// its positions and vertex channels are left for a scheme's masks to fill.
+
+#include <vector>
+
+#include "subdiv/mesh/polygon_mesh.h"
+#include "subdiv/mesh/topology.h"
+
+namespace subdiv {
+
+enum class SplitRule { quad, triangle };
+
+const char* to_string(SplitRule);
+
+/// Where a level's child vertices come from. Child vertex numbers are
+/// contiguous ranges per kind of parent element.
+struct SplitMap {
+  SplitRule rule = SplitRule::quad;
+  Index face_points = 0;    ///< first child vertex made from a parent face (quad split)
+  Index edge_points = 0;    ///< first child vertex made from a parent edge
+  Index vertex_points = 0;  ///< first child vertex made from a parent vertex
+  Index child_vertex_count = 0;
+  /// Parent face of each child face.
+  std::vector<Index> child_face_parent;
+
+  Index face_point(Index f) const { return face_points + f; }
+  Index edge_point(Index e) const { return edge_points + e; }
+  Index vertex_point(Index v) const { return vertex_points + v; }
+};
+
+/// The child level's faces, tags (crease and corner sharpness decremented by
+/// one per level unless infinite, holes inherited) and face-varying channels
+/// (linearly interpolated within each face). `child.positions` is resized to
+/// the child vertex count and zero-filled; vertex channels are not created.
+/// Requires every face corner to have an edge (no degenerate faces) and, for
+/// the triangle split, triangles only; throws TopologyError otherwise.
+SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
+                        PolygonMesh& child);
+
+}  // namespace subdiv

@@ -1,0 +1,200 @@
+// The refinement engine: split the topology, then evaluate the scheme's
+// masks for every child vertex, either straight into the child's positions
+// and vertex channels or into a stencil table. Child vertices are computed
+// independently (parallel over ranges), each as a fixed-order sum, so results
+// do not depend on the thread count.
+
+#include "subdiv/refine/refine.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "subdiv/core/error.h"
+#include "subdiv/mesh/validation.h"
+
+namespace subdiv {
+
+namespace {
+
+BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RefineOptions& options) {
+  return options.boundary.value_or(mesh.tags.boundary_interpolation);
+}
+
+// The mask of child vertex i: a face, edge or vertex point by its range.
+void child_mask(const LevelView& view, const Scheme& scheme, const SplitMap& map, Index i, MaskBuilder& mask) {
+  mask.clear();
+  if (i < map.edge_points) scheme.face_point(view, i - map.face_points, mask);
+  else if (i < map.vertex_points) scheme.edge_point(view, i - map.edge_points, mask);
+  else scheme.vertex_point(view, i - map.vertex_points, mask);
+}
+
+// Runs fn(i, mask) for every child vertex, in parallel.
+template <typename Fn>
+void for_each_child_mask(const LevelView& view, const Scheme& scheme, const SplitMap& map, Fn&& fn) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, map.child_vertex_count, 2048),
+                    [&](const tbb::blocked_range<Index>& range) {
+                      MaskBuilder mask;
+                      for (Index i = range.begin(); i != range.end(); ++i) {
+                        child_mask(view, scheme, map, i, mask);
+                        fn(i, mask);
+                      }
+                    });
+}
+
+struct Level {
+  PolygonMesh child;
+  SplitMap map;
+};
+
+// One step: child topology plus classification-backed masks handed to `fn`.
+template <typename Fn>
+Level refine_step(const PolygonMesh& parent, const Scheme& scheme, BoundaryInterpolation boundary, Fn&& fn) {
+  const MeshTopology topology(parent);
+  const LevelClassification cls = classify_level(parent, topology, boundary);
+  const LevelView view{parent, topology, cls.edge_sharp, cls.vertex_rule};
+  Level level;
+  level.map = split_topology(parent, topology, scheme.split, level.child);
+  fn(view, level);
+  return level;
+}
+
+void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const LevelView& view, Level& level) {
+  PolygonMesh& child = level.child;
+  child.vertex_channels.resize(parent.vertex_channels.size());
+  for (std::size_t ch = 0; ch < parent.vertex_channels.size(); ++ch) {
+    const VertexChannel& in = parent.vertex_channels[ch];
+    child.vertex_channels[ch] = {in.name, in.components,
+                                 std::vector<double>(static_cast<std::size_t>(level.map.child_vertex_count) *
+                                                     static_cast<std::size_t>(in.components))};
+  }
+  for_each_child_mask(view, scheme, level.map, [&](Index i, const MaskBuilder& mask) {
+    const auto vs = mask.vertices();
+    const auto ws = mask.weights();
+    Vec3 p;
+    for (std::size_t j = 0; j < vs.size(); ++j) p += ws[j] * parent.positions[static_cast<std::size_t>(vs[j])];
+    child.positions[static_cast<std::size_t>(i)] = p;
+    for (std::size_t ch = 0; ch < parent.vertex_channels.size(); ++ch) {
+      const VertexChannel& in = parent.vertex_channels[ch];
+      const auto k = static_cast<std::size_t>(in.components);
+      double* out = child.vertex_channels[ch].values.data() + static_cast<std::size_t>(i) * k;
+      for (std::size_t j = 0; j < vs.size(); ++j) {
+        const double* src = in.values.data() + static_cast<std::size_t>(vs[j]) * k;
+        for (std::size_t c = 0; c < k; ++c) out[c] += ws[j] * src[c];
+      }
+    }
+  });
+}
+
+StencilTable record_stencils(const PolygonMesh& parent, const Scheme& scheme, const LevelView& view,
+                             const SplitMap& map) {
+  // Masks are computed in parallel into per-row buffers, then appended in
+  // order; rows keep the masks' entry order so that applying the table
+  // reproduces the fast path bit for bit.
+  const auto rows = static_cast<std::size_t>(map.child_vertex_count);
+  std::vector<std::vector<Index>> vertices(rows);
+  std::vector<std::vector<double>> weights(rows);
+  for_each_child_mask(view, scheme, map, [&](Index i, const MaskBuilder& mask) {
+    vertices[static_cast<std::size_t>(i)].assign(mask.vertices().begin(), mask.vertices().end());
+    weights[static_cast<std::size_t>(i)].assign(mask.weights().begin(), mask.weights().end());
+  });
+  StencilTable table(parent.vertex_count());
+  std::size_t entries = 0;
+  for (const auto& v : vertices) entries += v.size();
+  table.reserve(rows, entries);
+  for (std::size_t i = 0; i < rows; ++i) table.append_row(vertices[i], weights[i]);
+  return table;
+}
+
+template <typename Body>
+void run_with_threads(int threads, Body&& body) {
+  if (threads > 0) {
+    tbb::task_arena arena(threads);
+    arena.execute(body);
+  } else {
+    body();
+  }
+}
+
+}  // namespace
+
+void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                     const SourceLines* lines) {
+  if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
+  if (boundary_of(mesh, options) == BoundaryInterpolation::none)
+    throw InvalidInputError("boundary interpolation 'none' is not supported; use edge-only or edge-and-corner");
+  ValidationReport report = validate(mesh, lines);
+  if (options.allow_non_manifold) {
+    // Those three become sharp features; everything else still stops us.
+    for (const IssueKind k : {IssueKind::non_manifold_edge, IssueKind::non_manifold_vertex,
+                              IssueKind::inconsistent_orientation})
+      report.counts[static_cast<std::size_t>(k)] = 0;
+    std::erase_if(report.issues, [](const ValidationIssue& i) {
+      return i.kind == IssueKind::non_manifold_edge || i.kind == IssueKind::non_manifold_vertex ||
+             i.kind == IssueKind::inconsistent_orientation;
+    });
+  }
+  if (!report.ok()) {
+    const std::string path = lines ? lines->path : std::string();
+    const bool fixable = report.count(IssueKind::non_manifold_edge) + report.count(IssueKind::non_manifold_vertex) +
+                             report.count(IssueKind::inconsistent_orientation) ==
+                         report.error_count();
+    ValidationReport copy = report;
+    if (fixable) {
+      for (auto& issue : copy.issues) issue.message += " (refining with --allow-non-manifold treats it as sharp)";
+    }
+    require_valid(copy, path);
+  }
+  if (scheme.needs_triangles)
+    for (Index f = 0; f < mesh.face_count(); ++f)
+      if (mesh.face_size(f) != 3) {
+        const std::uint32_t line = lines ? SourceLines::at(lines->face_lines, f) : 0;
+        std::string where = lines && !lines->path.empty() ? lines->path + (line ? ":" + std::to_string(line) : "") + ": " : "";
+        throw InvalidInputError(where + std::string(scheme.name) + " needs a triangle mesh, but face " +
+                                std::to_string(f) + " has " + std::to_string(mesh.face_size(f)) +
+                                " vertices (triangulate it first, e.g. with --triangulate)");
+      }
+}
+
+PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
+  check_refinable(mesh, scheme, options);
+  const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  PolygonMesh current = mesh;
+  run_with_threads(options.threads, [&] {
+    for (int l = 0; l < options.levels; ++l) {
+      Level level = refine_step(current, scheme, boundary, [&](const LevelView& view, Level& lv) {
+        evaluate_fast(current, scheme, view, lv);
+      });
+      current = std::move(level.child);
+    }
+  });
+  return current;
+}
+
+std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                                          PolygonMesh* final_level) {
+  check_refinable(mesh, scheme, options);
+  const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  std::vector<StencilTable> tables;
+  PolygonMesh current = mesh;
+  run_with_threads(options.threads, [&] {
+    for (int l = 0; l < options.levels; ++l) {
+      Level level = refine_step(current, scheme, boundary, [&](const LevelView& view, Level& lv) {
+        tables.push_back(record_stencils(current, scheme, view, lv.map));
+      });
+      if (final_level) tables.back().apply(current.positions, level.child.positions);
+      current = std::move(level.child);
+    }
+  });
+  if (final_level) *final_level = std::move(current);
+  return tables;
+}
+
+StencilTable compose(const std::vector<StencilTable>& levels) {
+  if (levels.empty()) return StencilTable();
+  StencilTable total = levels.front();
+  for (std::size_t i = 1; i < levels.size(); ++i) total = total.then(levels[i]);
+  return total;
+}
+
+}  // namespace subdiv

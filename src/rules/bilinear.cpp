@@ -1,0 +1,25 @@
+// Bilinear: face centroid, edge midpoint, vertices kept (quad split).
+// OpenSubdiv's Sdc::SCHEME_BILINEAR.
+
+#include "subdiv/rules/bilinear.h"
+
+#include "rule_helpers.h"
+
+namespace subdiv {
+
+namespace {
+
+void face_point(const LevelView& level, Index f, MaskBuilder& mask) { detail::add_face_average(level, f, 1.0, mask); }
+void edge_point(const LevelView& level, Index e, MaskBuilder& mask) { detail::add_edge_midpoint(level, e, mask); }
+void vertex_point(const LevelView&, Index v, MaskBuilder& mask) { mask.add(v, 1.0); }
+
+}  // namespace
+
+const Scheme& bilinear_scheme() {
+  static const Scheme scheme{"bilinear", "interpolating baseline, quad split: face centroids, edge midpoints",
+                             "bilinear refinement (OpenSubdiv's SCHEME_BILINEAR)", SplitRule::quad, false,
+                             face_point, edge_point, vertex_point};
+  return scheme;
+}
+
+}  // namespace subdiv

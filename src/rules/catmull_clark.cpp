@@ -1,0 +1,62 @@
+// Catmull-Clark: all of its weights.
+//
+// Source: E. Catmull and J. Clark, "Recursively generated B-spline surfaces
+// on arbitrary topological meshes", CAD 10(6), 1978, in the general-polygon
+// form of Zorin's survey, section 3.3:
+//   face point   the centroid of the face;
+//   edge point   (v0 + v1 + f0 + f1) / 4, with f0, f1 the new face points;
+//   vertex point ((k-2)/k) v + (1/k^2) sum v_i + (1/k^2) sum f_i
+//                (k = valence; v_i ring neighbours; f_i new face points).
+// For quads this is the survey's beta = 3/(2k), gamma = 1/(4k) form, and for
+// k = 4 the bicubic B-spline rules.
+// Sharp and boundary edges use the cubic B-spline curve rules: edge midpoint,
+// and 3/4, 1/8, 1/8 at crease vertices; corners are kept; darts use the
+// smooth rule. This is OpenSubdiv's Sdc::Scheme<SCHEME_CATMARK> for
+// infinitely sharp features.
+
+#include "subdiv/rules/catmull_clark.h"
+
+#include "rule_helpers.h"
+
+namespace subdiv {
+
+namespace {
+
+void face_point(const LevelView& level, Index f, MaskBuilder& mask) { detail::add_face_average(level, f, 1.0, mask); }
+
+void edge_point(const LevelView& level, Index e, MaskBuilder& mask) {
+  const auto sides = level.topology.edge_corners(e);
+  if (level.edge_sharp[static_cast<std::size_t>(e)] || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
+  const auto [a, b] = level.topology.edge_vertices(e);
+  mask.add(a, 0.25);
+  mask.add(b, 0.25);
+  for (const Index c : sides) detail::add_face_average(level, level.topology.corner_face(c), 0.25, mask);
+}
+
+void vertex_point(const LevelView& level, Index v, MaskBuilder& mask) {
+  switch (level.vertex_rule[static_cast<std::size_t>(v)]) {
+    case VertexRule::corner: return mask.add(v, 1.0);
+    case VertexRule::crease: return detail::add_crease_vertex(level, v, mask);
+    case VertexRule::smooth:
+    case VertexRule::dart: break;
+  }
+  const MeshTopology& t = level.topology;
+  const double k = t.valence(v);
+  const double k2 = k * k;
+  mask.add(v, (k - 2.0) / k);
+  for (const Index e : t.vertex_edges(v)) mask.add(t.other_vertex(e, v), 1.0 / k2);
+  for (const Index c : t.vertex_corners(v)) detail::add_face_average(level, t.corner_face(c), 1.0 / k2, mask);
+}
+
+}  // namespace
+
+const Scheme& catmull_clark_scheme() {
+  static const Scheme scheme{
+      "catmull-clark",
+      "approximating, quad split, any polygon mesh; C2 bicubic B-spline on regular quads, C1 elsewhere",
+      "E. Catmull, J. Clark: Recursively generated B-spline surfaces on arbitrary topological meshes, CAD 10(6), 1978",
+      SplitRule::quad, false, face_point, edge_point, vertex_point};
+  return scheme;
+}
+
+}  // namespace subdiv

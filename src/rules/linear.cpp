@@ -1,0 +1,23 @@
+// Linear: edge midpoints, vertices kept (triangle split).
+
+#include "subdiv/rules/linear.h"
+
+#include "rule_helpers.h"
+
+namespace subdiv {
+
+namespace {
+
+void edge_point(const LevelView& level, Index e, MaskBuilder& mask) { detail::add_edge_midpoint(level, e, mask); }
+void vertex_point(const LevelView&, Index v, MaskBuilder& mask) { mask.add(v, 1.0); }
+
+}  // namespace
+
+const Scheme& linear_scheme() {
+  static const Scheme scheme{"linear", "interpolating baseline, triangle split: edge midpoints",
+                             "linear (midpoint) refinement of triangle meshes", SplitRule::triangle, true, nullptr,
+                             edge_point, vertex_point};
+  return scheme;
+}
+
+}  // namespace subdiv

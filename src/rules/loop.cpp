@@ -1,0 +1,90 @@
+// Loop: all of its weights.
+//
+// Source: C. Loop, "Smooth subdivision surfaces based on triangles", MS
+// thesis, University of Utah, 1987; boundary rules as in Zorin's survey,
+// section 3.2 (Hoppe et al. 1994):
+//   edge point    3/8 (v0 + v1) + 1/8 (the two vertices opposite the edge);
+//   vertex point  (1 - k beta) v + beta sum v_i over the k ring neighbours;
+//   sharp or boundary edge: midpoint; crease vertex: 3/4, 1/8, 1/8; corner kept.
+//
+// Two named choices of beta:
+//   loop         beta(k) = (1/k) (5/8 - (3/8 + 1/4 cos(2 pi / k))^2), Loop's
+//                original, used by OpenSubdiv and CGAL;
+//   loop-warren  beta(k) = 3/(8k) for k > 3, and 3/16 for k = 3 (J. Warren,
+//                "Subdivision methods for geometric design", 1995).
+//
+// The survey prints 1/16 for k = 3; 3/16 is right. (1) Loop's own formula
+// gives exactly 3/16 at k = 3 (cos(2 pi/3) = -1/2, so (5/8 - 1/16)/3 = 3/16),
+// and Warren's rule is a simplification that keeps Loop's value where 3/(8k)
+// would be poor. (2) The eigenvalues of the vertex-and-ring subdivision matrix
+// are 1, 5/8 - k beta and 3/8 + 1/4 cos(2 pi j / k) (j = 1 .. k-1); C1
+// continuity needs the pair 3/8 + 1/4 cos(2 pi/k) (= 1/4 at k = 3) to be
+// subdominant. With beta = 3/16, 5/8 - 9/16 = 1/16 < 1/4; with beta = 1/16,
+// 5/8 - 3/16 = 7/16 > 1/4 would dominate and the limit surface would not be
+// tangent-plane continuous at valence-3 vertices. tests/rules/loop_test.cpp
+// checks both statements numerically.
+
+#include "subdiv/rules/loop.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "rule_helpers.h"
+
+namespace subdiv {
+
+double loop_beta(int k) {
+  const double c = 0.375 + 0.25 * std::cos(2.0 * std::numbers::pi / k);
+  return (0.625 - c * c) / k;
+}
+
+double loop_warren_beta(int k) { return k == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * k); }
+
+namespace {
+
+void edge_point(const LevelView& level, Index e, MaskBuilder& mask) {
+  const MeshTopology& t = level.topology;
+  const auto sides = t.edge_corners(e);
+  if (level.edge_sharp[static_cast<std::size_t>(e)] || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
+  const auto [a, b] = t.edge_vertices(e);
+  mask.add(a, 0.375);
+  mask.add(b, 0.375);
+  for (const Index c : sides) mask.add(t.corner_vertex(t.corner_prev(c)), 0.125);  // opposite vertex
+}
+
+template <double (*beta_of)(int)>
+void vertex_point(const LevelView& level, Index v, MaskBuilder& mask) {
+  switch (level.vertex_rule[static_cast<std::size_t>(v)]) {
+    case VertexRule::corner: return mask.add(v, 1.0);
+    case VertexRule::crease: return detail::add_crease_vertex(level, v, mask);
+    case VertexRule::smooth:
+    case VertexRule::dart: break;
+  }
+  const MeshTopology& t = level.topology;
+  const int k = t.valence(v);
+  const double beta = beta_of(k);
+  mask.add(v, 1.0 - k * beta);
+  for (const Index e : t.vertex_edges(v)) mask.add(t.other_vertex(e, v), beta);
+}
+
+}  // namespace
+
+const Scheme& loop_scheme() {
+  static const Scheme scheme{
+      "loop",
+      "approximating, triangle split, triangle meshes; C2 quartic box spline on regular meshes; Loop's beta",
+      "C. Loop: Smooth subdivision surfaces based on triangles, MS thesis, University of Utah, 1987",
+      SplitRule::triangle, true, nullptr, edge_point, vertex_point<loop_beta>};
+  return scheme;
+}
+
+const Scheme& loop_warren_scheme() {
+  static const Scheme scheme{
+      "loop-warren",
+      "Loop with Warren's beta = 3/(8k) (3/16 at k = 3)",
+      "J. Warren: Subdivision methods for geometric design, 1995 (unpublished manuscript), after C. Loop 1987",
+      SplitRule::triangle, true, nullptr, edge_point, vertex_point<loop_warren_beta>};
+  return scheme;
+}
+
+}  // namespace subdiv

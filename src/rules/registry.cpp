@@ -1,0 +1,34 @@
+#include <array>
+
+#include "subdiv/rules/bilinear.h"
+#include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/linear.h"
+#include "subdiv/rules/loop.h"
+#include "subdiv/rules/scheme.h"
+
+namespace subdiv {
+
+const char* to_string(VertexRule r) {
+  switch (r) {
+    case VertexRule::smooth: return "smooth";
+    case VertexRule::dart: return "dart";
+    case VertexRule::crease: return "crease";
+    case VertexRule::corner: return "corner";
+  }
+  return "?";
+}
+
+std::span<const Scheme* const> all_schemes() {
+  static const std::array<const Scheme*, 5> schemes = {&catmull_clark_scheme(), &loop_scheme(),
+                                                       &loop_warren_scheme(), &bilinear_scheme(),
+                                                       &linear_scheme()};
+  return schemes;
+}
+
+const Scheme* find_scheme(std::string_view name) {
+  for (const Scheme* s : all_schemes())
+    if (s->name == name) return s;
+  return nullptr;
+}
+
+}  // namespace subdiv

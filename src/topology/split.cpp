@@ -1,0 +1,77 @@
+// Tag and face-varying propagation shared by the splits, and the dispatch.
+
+#include "subdiv/topology/split.h"
+
+#include "split_detail.h"
+#include "subdiv/core/error.h"
+
+namespace subdiv {
+
+const char* to_string(SplitRule r) { return r == SplitRule::quad ? "quad split (QP, arity 2)" : "triangle split (TP, arity 2)"; }
+
+namespace detail {
+
+double child_sharpness(double s) {
+  if (s >= kInfiniteSharpness) return s;
+  return s > 1.0 ? s - 1.0 : 0.0;
+}
+
+void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
+                    PolygonMesh& child) {
+  const Tags& in = parent.tags;
+  Tags& out = child.tags;
+  out = Tags{};
+  out.boundary_interpolation = in.boundary_interpolation;
+  out.boundary_interpolation_set = in.boundary_interpolation_set;
+  out.face_varying_interpolation = in.face_varying_interpolation;
+  out.face_varying_interpolation_set = in.face_varying_interpolation_set;
+  out.crease_method = in.crease_method;
+  out.crease_method_set = in.crease_method_set;
+  out.triangle_subdivision = in.triangle_subdivision;
+  out.triangle_subdivision_set = in.triangle_subdivision_set;
+  out.face_varying_propagate_corners = in.face_varying_propagate_corners;
+  out.face_varying_propagate_corners_set = in.face_varying_propagate_corners_set;
+  out.other = in.other;
+
+  for (const CreaseTag& c : in.creases) {
+    const double s = child_sharpness(c.sharpness);
+    const Index e = topology.find_edge(c.v0, c.v1);
+    if (s <= 0.0 || e == kInvalidIndex) continue;
+    out.creases.push_back({map.vertex_point(c.v0), map.edge_point(e), s});
+    out.creases.push_back({map.edge_point(e), map.vertex_point(c.v1), s});
+  }
+  for (const CornerTag& c : in.corners) {
+    CornerTag t = c;
+    t.sharpness = child_sharpness(c.sharpness);
+    if (t.sharpness <= 0.0 || c.vertex < 0 || c.vertex >= parent.vertex_count()) continue;
+    t.vertex = map.vertex_point(c.vertex);
+    out.corners.push_back(t);
+  }
+  if (!in.holes.empty()) {
+    std::vector<char> is_hole(static_cast<std::size_t>(parent.face_count()), 0);
+    for (const Index f : in.holes)
+      if (f >= 0 && f < parent.face_count()) is_hole[static_cast<std::size_t>(f)] = 1;
+    for (Index cf = 0; cf < child.face_count(); ++cf)
+      if (is_hole[static_cast<std::size_t>(map.child_face_parent[static_cast<std::size_t>(cf)])]) out.holes.push_back(cf);
+  }
+}
+
+void require_edges(const MeshTopology& topology) {
+  for (Index c = 0; c < topology.corner_count(); ++c)
+    if (topology.corner_edge(c) == kInvalidIndex)
+      throw TopologyError("cannot split face " + std::to_string(topology.corner_face(c)) +
+                          ": it repeats a vertex on consecutive corners (a degenerate face)");
+}
+
+}  // namespace detail
+
+SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
+                        PolygonMesh& child) {
+  detail::require_edges(topology);
+  SplitMap map = rule == SplitRule::quad ? detail::quad_split(parent, topology, child)
+                                         : detail::triangle_split(parent, topology, child);
+  detail::propagate_tags(parent, topology, map, child);
+  return map;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,18 @@
+#pragma once
+// The individual splits; split_topology() dispatches to them.
+
+#include "subdiv/topology/split.h"
+
+namespace subdiv::detail {
+
+/// Sharpness of a tag one level down: infinite stays, otherwise minus one.
+double child_sharpness(double s);
+
+SplitMap quad_split(const PolygonMesh& parent, const MeshTopology& topology, PolygonMesh& child);
+SplitMap triangle_split(const PolygonMesh& parent, const MeshTopology& topology, PolygonMesh& child);
+
+void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
+                    PolygonMesh& child);
+void require_edges(const MeshTopology& topology);
+
+}  // namespace subdiv::detail
