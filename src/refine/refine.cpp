@@ -21,22 +21,52 @@ BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RefineOptions& 
   return options.boundary.value_or(mesh.tags.boundary_interpolation);
 }
 
-// The mask of child vertex i: a face, edge or vertex point by its range.
-void child_mask(const LevelView& view, const Scheme& scheme, const SplitMap& map, Index i, MaskBuilder& mask) {
+// What the masks of one level see: the parent and its creasing.
+struct ParentLevel {
+  const PolygonMesh& mesh;
+  const MeshTopology& topology;
+  const LevelCreasing& creasing;
+  LevelView view() const { return {mesh, topology, creasing.edge_sharpness}; }
+  LevelView child_view() const { return {mesh, topology, creasing.child_edge_sharpness}; }
+};
+
+// The mask of child vertex i: a face, edge or vertex point by its range, with
+// semi-sharp edges and rule transitions blending two masks (creasing.h).
+void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Index i, MaskBuilder& mask) {
   mask.clear();
-  if (i < map.edge_points) scheme.face_point(view, i - map.face_points, mask);
-  else if (i < map.vertex_points) scheme.edge_point(view, i - map.edge_points, mask);
-  else scheme.vertex_point(view, i - map.vertex_points, mask);
+  const LevelView view = parent.view();
+  if (i < map.edge_points) return scheme.face_point(view, i - map.face_points, mask);
+  if (i < map.vertex_points) {
+    const Index e = i - map.edge_points;
+    const double s = parent.creasing.edge_sharpness[static_cast<std::size_t>(e)];
+    if (s <= 0.0) return scheme.edge_point(view, e, EdgeRule::smooth, mask);
+    if (s >= 1.0) return scheme.edge_point(view, e, EdgeRule::crease, mask);
+    mask.set_scale(1.0 - s);
+    scheme.edge_point(view, e, EdgeRule::smooth, mask);
+    mask.set_scale(s);
+    return scheme.edge_point(view, e, EdgeRule::crease, mask);
+  }
+  const Index v = i - map.vertex_points;
+  const auto vi = static_cast<std::size_t>(v);
+  const VertexRule rule = parent.creasing.vertex_rule[vi];
+  const VertexRule child_rule = parent.creasing.child_vertex_rule[vi];
+  const double w = parent.creasing.parent_rule_weight[vi];
+  if (rule == child_rule || w >= 1.0) return scheme.vertex_point(view, v, rule, mask);
+  mask.set_scale(1.0 - w);
+  scheme.vertex_point(parent.child_view(), v, child_rule, mask);
+  if (w <= 0.0) return;
+  mask.set_scale(w);
+  scheme.vertex_point(view, v, rule, mask);
 }
 
 // Runs fn(i, mask) for every child vertex, in parallel.
 template <typename Fn>
-void for_each_child_mask(const LevelView& view, const Scheme& scheme, const SplitMap& map, Fn&& fn) {
+void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Fn&& fn) {
   tbb::parallel_for(tbb::blocked_range<Index>(0, map.child_vertex_count, 2048),
                     [&](const tbb::blocked_range<Index>& range) {
                       MaskBuilder mask;
                       for (Index i = range.begin(); i != range.end(); ++i) {
-                        child_mask(view, scheme, map, i, mask);
+                        child_mask(parent, scheme, map, i, mask);
                         fn(i, mask);
                       }
                     });
@@ -51,15 +81,14 @@ struct Level {
 template <typename Fn>
 Level refine_step(const PolygonMesh& parent, const Scheme& scheme, BoundaryInterpolation boundary, Fn&& fn) {
   const MeshTopology topology(parent);
-  const LevelClassification cls = classify_level(parent, topology, boundary);
-  const LevelView view{parent, topology, cls.edge_sharp, cls.vertex_rule};
+  const LevelCreasing creasing = compute_creasing(parent, topology, boundary);
   Level level;
   level.map = split_topology(parent, topology, scheme.split, level.child);
-  fn(view, level);
+  fn(ParentLevel{parent, topology, creasing}, level);
   return level;
 }
 
-void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const LevelView& view, Level& level) {
+void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view, Level& level) {
   PolygonMesh& child = level.child;
   child.vertex_channels.resize(parent.vertex_channels.size());
   for (std::size_t ch = 0; ch < parent.vertex_channels.size(); ++ch) {
@@ -86,7 +115,7 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const LevelV
   });
 }
 
-StencilTable record_stencils(const PolygonMesh& parent, const Scheme& scheme, const LevelView& view,
+StencilTable record_stencils(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view,
                              const SplitMap& map) {
   // Masks are computed in parallel into per-row buffers, then appended in
   // order; rows keep the masks' entry order so that applying the table
@@ -162,7 +191,7 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   PolygonMesh current = mesh;
   run_with_threads(options.threads, [&] {
     for (int l = 0; l < options.levels; ++l) {
-      Level level = refine_step(current, scheme, boundary, [&](const LevelView& view, Level& lv) {
+      Level level = refine_step(current, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
         evaluate_fast(current, scheme, view, lv);
       });
       current = std::move(level.child);
@@ -179,7 +208,7 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
   PolygonMesh current = mesh;
   run_with_threads(options.threads, [&] {
     for (int l = 0; l < options.levels; ++l) {
-      Level level = refine_step(current, scheme, boundary, [&](const LevelView& view, Level& lv) {
+      Level level = refine_step(current, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
         tables.push_back(record_stencils(current, scheme, view, lv.map));
       });
       if (final_level) tables.back().apply(current.positions, level.child.positions);

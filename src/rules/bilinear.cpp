@@ -10,8 +10,8 @@ namespace subdiv {
 namespace {
 
 void face_point(const LevelView& level, Index f, MaskBuilder& mask) { detail::add_face_average(level, f, 1.0, mask); }
-void edge_point(const LevelView& level, Index e, MaskBuilder& mask) { detail::add_edge_midpoint(level, e, mask); }
-void vertex_point(const LevelView&, Index v, MaskBuilder& mask) { mask.add(v, 1.0); }
+void edge_point(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) { detail::add_edge_midpoint(level, e, mask); }
+void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
 
 }  // namespace
 

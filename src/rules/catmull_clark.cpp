@@ -11,8 +11,8 @@
 // k = 4 the bicubic B-spline rules.
 // Sharp and boundary edges use the cubic B-spline curve rules: edge midpoint,
 // and 3/4, 1/8, 1/8 at crease vertices; corners are kept; darts use the
-// smooth rule. This is OpenSubdiv's Sdc::Scheme<SCHEME_CATMARK> for
-// infinitely sharp features.
+// smooth rule; semi-sharp features blend these (refine/creasing.cpp). This is
+// OpenSubdiv's Sdc::Scheme<SCHEME_CATMARK>.
 
 #include "subdiv/rules/catmull_clark.h"
 
@@ -24,17 +24,17 @@ namespace {
 
 void face_point(const LevelView& level, Index f, MaskBuilder& mask) { detail::add_face_average(level, f, 1.0, mask); }
 
-void edge_point(const LevelView& level, Index e, MaskBuilder& mask) {
+void edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBuilder& mask) {
   const auto sides = level.topology.edge_corners(e);
-  if (level.edge_sharp[static_cast<std::size_t>(e)] || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
+  if (rule == EdgeRule::crease || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
   const auto [a, b] = level.topology.edge_vertices(e);
   mask.add(a, 0.25);
   mask.add(b, 0.25);
   for (const Index c : sides) detail::add_face_average(level, level.topology.corner_face(c), 0.25, mask);
 }
 
-void vertex_point(const LevelView& level, Index v, MaskBuilder& mask) {
-  switch (level.vertex_rule[static_cast<std::size_t>(v)]) {
+void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder& mask) {
+  switch (rule) {
     case VertexRule::corner: return mask.add(v, 1.0);
     case VertexRule::crease: return detail::add_crease_vertex(level, v, mask);
     case VertexRule::smooth:

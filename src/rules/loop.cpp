@@ -42,10 +42,10 @@ double loop_warren_beta(int k) { return k == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * k); }
 
 namespace {
 
-void edge_point(const LevelView& level, Index e, MaskBuilder& mask) {
+void edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBuilder& mask) {
   const MeshTopology& t = level.topology;
   const auto sides = t.edge_corners(e);
-  if (level.edge_sharp[static_cast<std::size_t>(e)] || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
+  if (rule == EdgeRule::crease || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
   const auto [a, b] = t.edge_vertices(e);
   mask.add(a, 0.375);
   mask.add(b, 0.375);
@@ -53,8 +53,8 @@ void edge_point(const LevelView& level, Index e, MaskBuilder& mask) {
 }
 
 template <double (*beta_of)(int)>
-void vertex_point(const LevelView& level, Index v, MaskBuilder& mask) {
-  switch (level.vertex_rule[static_cast<std::size_t>(v)]) {
+void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder& mask) {
+  switch (rule) {
     case VertexRule::corner: return mask.add(v, 1.0);
     case VertexRule::crease: return detail::add_crease_vertex(level, v, mask);
     case VertexRule::smooth:

@@ -9,6 +9,7 @@
 #include "subdiv/mesh/polygon_mesh.h"
 #include "subdiv/mesh/source_lines.h"
 #include "subdiv/refine/stencil_table.h"
+#include "subdiv/refine/creasing.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv {
@@ -24,16 +25,6 @@ struct RefineOptions {
   /// Worker threads; 0 = all available. Results are identical for any count.
   int threads = 0;
 };
-
-/// Per-level classification that every scheme's masks read: which edges are
-/// sharp (boundary, non-manifold, flipped, or tagged infinitely sharp) and
-/// which vertex rule applies.
-struct LevelClassification {
-  std::vector<std::uint8_t> edge_sharp;
-  std::vector<VertexRule> vertex_rule;
-};
-LevelClassification classify_level(const PolygonMesh& mesh, const MeshTopology& topology,
-                                   BoundaryInterpolation boundary);
 
 /// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined
 /// with `scheme` under `options`; the message names the offending element.

@@ -16,37 +16,47 @@
 
 namespace subdiv {
 
-/// How a vertex is treated, from the sharp edges around it (boundary,
-/// non-manifold and infinitely sharp crease edges) and its tags: the survey's
-/// smooth, dart, crease and corner vertices.
+/// Which rule makes a vertex point, from the sharp edges around the vertex
+/// and its own sharpness: the survey's smooth, dart, crease and corner
+/// vertices (section 3.2), decided as OpenSubdiv's Sdc::Crease does.
 enum class VertexRule : std::uint8_t {
   smooth,  ///< no sharp edge
-  dart,    ///< one sharp edge (interior): smooth rule
+  dart,    ///< one sharp edge: the smooth rule
   crease,  ///< two sharp edges: the curve rule along them
-  corner,  ///< three or more sharp edges, a corner tag, a boundary corner, or no ordered ring: fixed
+  corner,  ///< three or more sharp edges, or a sharp vertex: kept in place
 };
+
+/// Which rule makes an edge point.
+enum class EdgeRule : std::uint8_t { smooth, crease };
 
 const char* to_string(VertexRule);
 
-/// Everything a mask may look at: the parent level and its classification.
+/// What a mask may look at: the parent level and the sharpness of its edges
+/// (> 0 is sharp for the rule being evaluated; boundary and non-manifold
+/// edges are infinitely sharp).
 struct LevelView {
   const PolygonMesh& mesh;
   const MeshTopology& topology;
-  std::span<const std::uint8_t> edge_sharp;  ///< per edge: boundary, non-manifold or infinitely sharp
-  std::span<const VertexRule> vertex_rule;   ///< per vertex
+  std::span<const double> edge_sharpness;
+
+  bool is_sharp(Index e) const { return edge_sharpness[static_cast<std::size_t>(e)] > 0.0; }
 };
 
-/// Collects (parent vertex, weight) pairs for one child vertex.
+/// Collects (parent vertex, weight) pairs for one child vertex. Weights added
+/// are multiplied by the current scale, so that the engine can blend the
+/// masks of two rules (semi-sharp creases).
 class MaskBuilder {
  public:
   void clear() {
     vertices_.clear();
     weights_.clear();
+    scale_ = 1.0;
   }
   void add(Index vertex, double weight) {
     vertices_.push_back(vertex);
-    weights_.push_back(weight);
+    weights_.push_back(scale_ * weight);
   }
+  void set_scale(double scale) { scale_ = scale; }
   std::span<const Index> vertices() const { return vertices_; }
   std::span<const double> weights() const { return weights_; }
   std::size_t size() const { return vertices_.size(); }
@@ -54,9 +64,12 @@ class MaskBuilder {
  private:
   std::vector<Index> vertices_;
   std::vector<double> weights_;
+  double scale_ = 1.0;
 };
 
-using MaskFunction = void (*)(const LevelView& level, Index element, MaskBuilder& mask);
+using FaceMask = void (*)(const LevelView& level, Index face, MaskBuilder& mask);
+using EdgeMask = void (*)(const LevelView& level, Index edge, EdgeRule rule, MaskBuilder& mask);
+using VertexMask = void (*)(const LevelView& level, Index vertex, VertexRule rule, MaskBuilder& mask);
 
 struct Scheme {
   std::string_view name;      ///< as users type it: "catmull-clark", "loop-warren"
@@ -64,9 +77,9 @@ struct Scheme {
   std::string_view citation;  ///< the paper the rules come from
   SplitRule split;
   bool needs_triangles = false;
-  MaskFunction face_point = nullptr;  ///< quad split only
-  MaskFunction edge_point = nullptr;
-  MaskFunction vertex_point = nullptr;
+  FaceMask face_point = nullptr;  ///< quad split only
+  EdgeMask edge_point = nullptr;
+  VertexMask vertex_point = nullptr;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.

@@ -1,0 +1,87 @@
+#include "subdiv/refine/creasing.h"
+
+#include <algorithm>
+
+namespace subdiv {
+
+double subdivide_sharpness(double s) {
+  if (s >= kInfiniteSharpness) return s;
+  return s > 1.0 ? s - 1.0 : 0.0;
+}
+
+VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) {
+  if (vertex_sharpness > 0.0) return VertexRule::corner;
+  switch (sharp_edge_count) {
+    case 0: return VertexRule::smooth;
+    case 1: return VertexRule::dart;
+    case 2: return VertexRule::crease;
+    default: return VertexRule::corner;
+  }
+}
+
+LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo, BoundaryInterpolation boundary) {
+  const auto ne = static_cast<std::size_t>(topo.edge_count());
+  const auto nv = static_cast<std::size_t>(topo.vertex_count());
+  LevelCreasing out;
+
+  out.edge_sharpness.assign(ne, 0.0);
+  for (const CreaseTag& c : mesh.tags.creases) {
+    const Index e = topo.find_edge(c.v0, c.v1);
+    if (e != kInvalidIndex) out.edge_sharpness[static_cast<std::size_t>(e)] = std::max(out.edge_sharpness[static_cast<std::size_t>(e)], c.sharpness);
+  }
+  for (Index e = 0; e < topo.edge_count(); ++e)
+    if (topo.edge_face_count(e) != 2 || topo.is_flipped_edge(e)) out.edge_sharpness[static_cast<std::size_t>(e)] = kInfiniteSharpness;
+  out.child_edge_sharpness.resize(ne);
+  std::transform(out.edge_sharpness.begin(), out.edge_sharpness.end(), out.child_edge_sharpness.begin(),
+                 subdivide_sharpness);
+
+  std::vector<double> vertex_sharpness(nv, 0.0);
+  for (const CornerTag& c : mesh.tags.corners)
+    if (c.vertex >= 0 && static_cast<std::size_t>(c.vertex) < nv)
+      vertex_sharpness[static_cast<std::size_t>(c.vertex)] = std::max(vertex_sharpness[static_cast<std::size_t>(c.vertex)], c.sharpness);
+
+  out.vertex_rule.resize(nv);
+  out.child_vertex_rule.resize(nv);
+  out.parent_rule_weight.assign(nv, 1.0);
+  for (Index v = 0; v < topo.vertex_count(); ++v) {
+    const auto vi = static_cast<std::size_t>(v);
+    int sharp = 0, child_sharp = 0, infinitely_sharp = 0;
+    for (const Index e : topo.vertex_edges(v)) {
+      const auto ei = static_cast<std::size_t>(e);
+      sharp += out.edge_sharpness[ei] > 0.0;
+      child_sharp += out.child_edge_sharpness[ei] > 0.0;
+      infinitely_sharp += out.edge_sharpness[ei] >= kInfiniteSharpness;
+    }
+    const VertexKind kind = topo.vertex_kind(v);
+    double& vs = vertex_sharpness[vi];
+    if (kind == VertexKind::isolated) vs = kInfiniteSharpness;
+    if (kind != VertexKind::isolated && !topo.ring_ordered(v) && infinitely_sharp != 2) vs = kInfiniteSharpness;
+    if (boundary == BoundaryInterpolation::edge_and_corner && kind == VertexKind::boundary &&
+        topo.vertex_face_count(v) == 1)
+      vs = kInfiniteSharpness;
+
+    const double child_vs = subdivide_sharpness(vs);
+    out.vertex_rule[vi] = vertex_rule_for(vs, sharp);
+    out.child_vertex_rule[vi] = vertex_rule_for(child_vs, child_sharp);
+    if (out.vertex_rule[vi] != out.child_vertex_rule[vi]) {
+      // Sdc::Crease::ComputeFractionalWeightAtVertex.
+      int transitions = 0;
+      double sum = 0.0;
+      if (vs > 0.0 && child_vs <= 0.0) {
+        ++transitions;
+        sum += vs;
+      }
+      for (const Index e : topo.vertex_edges(v)) {
+        const auto ei = static_cast<std::size_t>(e);
+        if (out.edge_sharpness[ei] > 0.0 && out.child_edge_sharpness[ei] <= 0.0) {
+          ++transitions;
+          sum += out.edge_sharpness[ei];
+        }
+      }
+      out.parent_rule_weight[vi] = transitions > 0 ? std::min(1.0, sum / transitions) : 0.0;
+    }
+  }
+  return out;
+}
+
+}  // namespace subdiv
