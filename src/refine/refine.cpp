@@ -195,6 +195,7 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
         evaluate_fast(current, scheme, view, lv);
       });
       current = std::move(level.child);
+      if (options.on_level) options.on_level(l + 1, current);
     }
   });
   return current;
@@ -213,6 +214,7 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
       });
       if (final_level) tables.back().apply(current.positions, level.child.positions);
       current = std::move(level.child);
+      if (options.on_level) options.on_level(l + 1, current);
     }
   });
   if (final_level) *final_level = std::move(current);

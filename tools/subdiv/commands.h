@@ -17,5 +17,7 @@ using Command = std::function<int()>;
 
 Command add_info_command(CLI::App& app);
 Command add_convert_command(CLI::App& app);
+Command add_refine_command(CLI::App& app);
+Command add_schemes_command(CLI::App& app);
 
 }  // namespace subdiv::cli

@@ -32,11 +32,15 @@ int main(int argc, char** argv) {
   app.footer(
       "Examples:\n"
       "  subdiv info data/meshes/cube.obj\n"
-      "  subdiv convert data/meshes/bunny.obj /tmp/bunny.ply\n"
+      "  subdiv convert data/meshes/elephant.obj /tmp/elephant.ply\n"
+      "  subdiv refine data/meshes/spot_control_mesh.obj -s catmull-clark -l 2 -o /tmp/spot.obj\n"
+      "  subdiv schemes\n"
       "Run 'subdiv COMMAND --help' for a command's options.");
 
   const Command info = add_info_command(app);
   const Command convert = add_convert_command(app);
+  const Command refine = add_refine_command(app);
+  const Command schemes = add_schemes_command(app);
 
   try {
     app.parse(argc, argv);
@@ -54,6 +58,8 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("info")) return info();
     if (app.got_subcommand("convert")) return convert();
+    if (app.got_subcommand("refine")) return refine();
+    if (app.got_subcommand("schemes")) return schemes();
     print_error("no command given (run 'subdiv --help' for usage)");
     return kExitBadInput;
   } catch (const subdiv::Error& e) {

@@ -3,6 +3,7 @@
 // directly from the masks) and the stencil path (the same masks recorded as
 // tables), level by level. Each level is a complete mesh.
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct RefineOptions {
   bool allow_non_manifold = false;
   /// Worker threads; 0 = all available. Results are identical for any count.
   int threads = 0;
+  /// Called after each level with its number (1-based) and the level's mesh.
+  std::function<void(int level, const PolygonMesh& mesh)> on_level;
 };
 
 /// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined

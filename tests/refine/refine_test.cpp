@@ -1,0 +1,218 @@
+#include "subdiv/refine/refine.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include "subdiv/core/error.h"
+#include "subdiv/io/mesh_io.h"
+#include "subdiv/mesh/triangulate.h"
+#include "subdiv/mesh/validation.h"
+#include "support/test_meshes.h"
+
+namespace subdiv {
+namespace {
+
+const Scheme& scheme(const char* name) {
+  const Scheme* s = find_scheme(name);
+  if (!s) throw std::runtime_error(std::string("no scheme ") + name);
+  return *s;
+}
+
+PolygonMesh creased_cube() {
+  PolygonMesh m = test::cube();
+  m.tags.creases = {{0, 1, 10.0}, {1, 2, 2.5}, {2, 6, 0.5}};
+  m.tags.corners = {{7, 10.0, CornerType::unspecified, std::nullopt}, {4, 0.7, CornerType::unspecified, std::nullopt}};
+  return m;
+}
+
+// Meshes that exercise every rule: smooth, boundary, corner, crease,
+// semi-sharp, n-gons and triangles.
+std::vector<std::pair<std::string, PolygonMesh>> quad_cases() {
+  std::vector<std::pair<std::string, PolygonMesh>> out;
+  out.emplace_back("cube", test::cube());
+  out.emplace_back("creased cube", creased_cube());
+  out.emplace_back("grid", test::quad_grid(3, 2));
+  out.emplace_back("spot", read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh);
+  return out;
+}
+std::vector<std::pair<std::string, PolygonMesh>> triangle_cases() {
+  std::vector<std::pair<std::string, PolygonMesh>> out;
+  out.emplace_back("tetrahedron", test::tetrahedron());
+  out.emplace_back("triangulated creased cube", triangulate(creased_cube()));
+  out.emplace_back("triangle grid", test::triangle_grid(3, 3));
+  return out;
+}
+std::vector<std::pair<const Scheme*, std::vector<std::pair<std::string, PolygonMesh>>>> all_cases() {
+  return {{&scheme("catmull-clark"), quad_cases()}, {&scheme("bilinear"), quad_cases()},
+          {&scheme("loop"), triangle_cases()}, {&scheme("loop-warren"), triangle_cases()},
+          {&scheme("linear"), triangle_cases()}};
+}
+
+double scale_of(const PolygonMesh& m) {
+  double s = 0;
+  for (const Vec3& p : m.positions) s = std::max({s, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  return std::max(s, 1.0);
+}
+
+TEST(Refine, EveryStencilRowSumsToOne) {
+  for (const auto& [s, cases] : all_cases())
+    for (const auto& [name, mesh] : cases) {
+      RefineOptions o;
+      o.levels = 2;
+      for (const StencilTable& t : refine_stencils(mesh, *s, o))
+        for (Index r = 0; r < t.row_count(); ++r) {
+          const auto w = t.row_weights(r);
+          EXPECT_NEAR(std::accumulate(w.begin(), w.end(), 0.0), 1.0, 1e-14) << s->name << " " << name << " row " << r;
+        }
+    }
+}
+
+TEST(Refine, StencilPathReproducesTheFastPath) {
+  for (const auto& [s, cases] : all_cases())
+    for (const auto& [name, mesh] : cases) {
+      RefineOptions o;
+      o.levels = 3;
+      const PolygonMesh fast = refine(mesh, *s, o);
+      PolygonMesh via_tables;
+      const auto tables = refine_stencils(mesh, *s, o, &via_tables);
+      ASSERT_EQ(tables.size(), 3u);
+      // Level by level the tables hold the masks' entries in order: bit-identical.
+      EXPECT_EQ(via_tables.positions, fast.positions) << s->name << " " << name;
+      EXPECT_EQ(via_tables.face_indices, fast.face_indices);
+      // Composed into one coarse -> level-3 table: the same up to rounding.
+      const StencilTable total = compose(tables);
+      std::vector<Vec3> direct(static_cast<std::size_t>(total.row_count()));
+      total.apply(mesh.positions, direct);
+      for (std::size_t i = 0; i < direct.size(); ++i)
+        ASSERT_LT(norm(direct[i] - fast.positions[i]), 1e-13 * scale_of(mesh)) << s->name << " " << name << " " << i;
+    }
+}
+
+TEST(Refine, ResultsDoNotDependOnTheThreadCount) {
+  const PolygonMesh spot = read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh;
+  RefineOptions one, two;
+  one.levels = two.levels = 4;
+  one.threads = 1;
+  two.threads = 2;
+  EXPECT_EQ(refine(spot, scheme("catmull-clark"), one).positions, refine(spot, scheme("catmull-clark"), two).positions);
+  const PolygonMesh elephant = read_mesh(test::bundled_path("elephant.obj")).mesh;
+  one.levels = two.levels = 2;
+  EXPECT_EQ(refine(elephant, scheme("loop"), one).positions, refine(elephant, scheme("loop"), two).positions);
+}
+
+TEST(Refine, AffineInvariance) {
+  // A x + b commutes with refinement because every mask's weights sum to 1.
+  const double a[3][3] = {{0.8, -0.3, 0.1}, {0.2, 1.1, -0.4}, {0.05, 0.3, 0.9}};
+  const Vec3 b{3, -2, 0.5};
+  auto map = [&](Vec3 p) {
+    return Vec3{a[0][0] * p.x + a[0][1] * p.y + a[0][2] * p.z, a[1][0] * p.x + a[1][1] * p.y + a[1][2] * p.z,
+                a[2][0] * p.x + a[2][1] * p.y + a[2][2] * p.z} + b;
+  };
+  for (const auto& [s, cases] : all_cases())
+    for (const auto& [name, mesh] : cases) {
+      PolygonMesh moved = mesh;
+      for (Vec3& p : moved.positions) p = map(p);
+      RefineOptions o;
+      o.levels = 2;
+      const PolygonMesh r1 = refine(mesh, *s, o), r2 = refine(moved, *s, o);
+      for (std::size_t i = 0; i < r1.positions.size(); ++i)
+        ASSERT_LT(norm(map(r1.positions[i]) - r2.positions[i]), 1e-12 * scale_of(moved)) << s->name << " " << name;
+    }
+}
+
+TEST(Refine, InvariantUnderRenumberingVerticesAndRotatingFaces) {
+  std::mt19937 rng(7);
+  for (const auto& [s, cases] : all_cases())
+    for (const auto& [name, mesh] : cases) {
+      std::vector<Index> perm(static_cast<std::size_t>(mesh.vertex_count()));
+      std::iota(perm.begin(), perm.end(), 0);
+      std::shuffle(perm.begin(), perm.end(), rng);
+      PolygonMesh renumbered = mesh;
+      for (Index v = 0; v < mesh.vertex_count(); ++v) renumbered.positions[static_cast<std::size_t>(perm[v])] = mesh.positions[v];
+      renumbered.face_indices.clear();
+      renumbered.face_offsets = {0};
+      for (Index f = 0; f < mesh.face_count(); ++f) {  // also start every face at another corner
+        const auto face = mesh.face(f);
+        std::vector<Index> rotated;
+        for (std::size_t i = 0; i < face.size(); ++i) rotated.push_back(perm[face[(i + 1) % face.size()]]);
+        renumbered.add_face(rotated);
+      }
+      for (auto& c : renumbered.tags.creases) c = {perm[c.v0], perm[c.v1], c.sharpness};
+      for (auto& c : renumbered.tags.corners) c.vertex = perm[c.vertex];
+
+      RefineOptions o;
+      o.levels = 1;
+      const PolygonMesh r1 = refine(mesh, *s, o), r2 = refine(renumbered, *s, o);
+      const MeshTopology t1(mesh), t2(renumbered);
+      const Index e1 = s->split == SplitRule::quad ? mesh.face_count() : 0;
+      const Index v1 = e1 + t1.edge_count();
+      for (Index v = 0; v < mesh.vertex_count(); ++v)  // vertex points
+        ASSERT_LT(norm(r1.positions[v1 + v] - r2.positions[v1 + perm[v]]), 1e-14 * scale_of(mesh)) << s->name << " " << name;
+      for (Index e = 0; e < t1.edge_count(); ++e) {  // edge points
+        const auto [a, b] = t1.edge_vertices(e);
+        const Index e2 = t2.find_edge(perm[a], perm[b]);
+        ASSERT_LT(norm(r1.positions[e1 + e] - r2.positions[e1 + e2]), 1e-14 * scale_of(mesh)) << s->name << " " << name;
+      }
+    }
+}
+
+TEST(Refine, VertexChannelsFollowThePositionMasks) {
+  PolygonMesh mesh = creased_cube();
+  VertexChannel copy{"copy", 3, {}};
+  for (const Vec3& p : mesh.positions) copy.values.insert(copy.values.end(), {p.x, p.y, p.z});
+  mesh.vertex_channels.push_back(copy);
+  RefineOptions o;
+  o.levels = 2;
+  const PolygonMesh r = refine(mesh, scheme("catmull-clark"), o);
+  ASSERT_EQ(r.vertex_channels.size(), 1u);
+  for (Index v = 0; v < r.vertex_count(); ++v)
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(r.vertex_channels[0].values[static_cast<std::size_t>(v) * 3 + static_cast<std::size_t>(i)], r.positions[v][i]);
+}
+
+TEST(Refine, LevelsAreCompleteValidMeshes) {
+  const PolygonMesh spot = read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh;
+  RefineOptions o;
+  o.levels = 2;
+  int seen = 0;
+  o.on_level = [&](int level, const PolygonMesh& m) {
+    ++seen;
+    EXPECT_EQ(level, seen);
+    EXPECT_TRUE(validate(m).ok());
+    EXPECT_NE(m.find_face_varying_channel("uv"), nullptr);
+  };
+  const PolygonMesh r = refine(spot, scheme("catmull-clark"), o);
+  EXPECT_EQ(seen, 2);
+  EXPECT_EQ(r.face_count(), 2928);  // 180 faces, 732 quads after one step, x4
+  EXPECT_EQ(refine(spot, scheme("catmull-clark"), RefineOptions{0, {}, false, 0, {}}).positions, spot.positions);
+}
+
+TEST(Refine, RejectsWhatItCannotRefine) {
+  try {
+    refine(test::cube(), scheme("loop"));
+    FAIL();
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("loop needs a triangle mesh, but face 0 has 4 vertices"), std::string::npos);
+  }
+  PolygonMesh bowtie = make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}}, {{0, 1, 2}, {0, 3, 4}});
+  try {
+    refine(bowtie, scheme("loop"));
+    FAIL();
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("--allow-non-manifold"), std::string::npos) << e.what();
+  }
+  RefineOptions allow;
+  allow.allow_non_manifold = true;
+  const PolygonMesh r = refine(bowtie, scheme("loop"), allow);
+  EXPECT_EQ(r.positions[6 + 0], bowtie.positions[0]);  // the non-manifold vertex is a corner: kept
+  PolygonMesh none = test::cube();
+  none.tags.boundary_interpolation = BoundaryInterpolation::none;
+  EXPECT_THROW(refine(none, scheme("catmull-clark")), InvalidInputError);
+  EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), RefineOptions{-1, {}, false, 0, {}}), InvalidInputError);
+}
+
+}  // namespace
+}  // namespace subdiv
