@@ -46,3 +46,119 @@ BENCHMARK(BM_Peer_OpenSubdiv_BuildTopology_Triangles)->Arg(707)->Unit(benchmark:
 
 }  // namespace
 }  // namespace subdiv::bench
+
+// Uniform refinement: TopologyRefiner::RefineUniform + PrimvarRefiner::Interpolate
+// level by level, double precision, the same inputs as bench_refine.cpp.
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/stencilTableFactory.h>
+#include <opensubdiv/osd/cpuEvaluator.h>
+#include <opensubdiv/osd/bufferDescriptor.h>
+
+namespace subdiv::bench {
+namespace {
+
+struct OsdVertex {
+  double x, y, z;
+  void Clear(void* = nullptr) { x = y = z = 0.0; }
+  void AddWithWeight(const OsdVertex& v, double w) {
+    x += w * v.x;
+    y += w * v.y;
+    z += w * v.z;
+  }
+};
+
+std::unique_ptr<Far::TopologyRefiner> osd_refiner(const PolygonMesh& mesh, Sdc::SchemeType type,
+                                                  std::vector<int>& sizes) {
+  sizes.resize(static_cast<std::size_t>(mesh.face_count()));
+  for (Index f = 0; f < mesh.face_count(); ++f) sizes[static_cast<std::size_t>(f)] = mesh.face_size(f);
+  Far::TopologyDescriptor desc;
+  desc.numVertices = mesh.vertex_count();
+  desc.numFaces = mesh.face_count();
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = mesh.face_indices.data();
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(type, sdc)));
+}
+
+void osd_refine_bench(benchmark::State& state, const PolygonMesh& mesh, Sdc::SchemeType type) {
+  const int levels = static_cast<int>(state.range(1));
+  std::vector<int> sizes;
+  int faces = 0;
+  for (auto _ : state) {
+    auto refiner = osd_refiner(mesh, type, sizes);
+    refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+    std::vector<OsdVertex> buffer(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+      const Vec3 p = mesh.positions[static_cast<std::size_t>(v)];
+      buffer[static_cast<std::size_t>(v)] = {p.x, p.y, p.z};
+    }
+    Far::PrimvarRefiner primvar(*refiner);
+    OsdVertex* src = buffer.data();
+    for (int level = 1; level <= levels; ++level) {
+      OsdVertex* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+      primvar.Interpolate(level, src, dst);
+      src = dst;
+    }
+    faces = refiner->GetLevel(levels).GetNumFaces();
+    benchmark::DoNotOptimize(buffer.data());
+  }
+  state.counters["faces_out"] = faces;
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * faces);
+}
+
+void BM_Peer_OpenSubdiv_Refine_CatmullClark(benchmark::State& state) {
+  osd_refine_bench(state, torus(static_cast<int>(state.range(0))), Sdc::SCHEME_CATMARK);
+}
+BENCHMARK(BM_Peer_OpenSubdiv_Refine_CatmullClark)
+    ->Args({158, 4})->Args({1000, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Peer_OpenSubdiv_Refine_Loop(benchmark::State& state) {
+  osd_refine_bench(state, triangulated_torus(static_cast<int>(state.range(0))), Sdc::SCHEME_LOOP);
+}
+BENCHMARK(BM_Peer_OpenSubdiv_Refine_Loop)->Args({708, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Peer_OpenSubdiv_StencilBuild_CatmullClark(benchmark::State& state) {
+  const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
+  const int levels = static_cast<int>(state.range(1));
+  std::vector<int> sizes;
+  for (auto _ : state) {
+    auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK, sizes);
+    refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+    Far::StencilTableFactoryReal<double>::Options options;
+    options.generateIntermediateLevels = false;
+    std::unique_ptr<const Far::StencilTableReal<double>> table(
+        Far::StencilTableFactoryReal<double>::Create(*refiner, options));
+    benchmark::DoNotOptimize(table->GetNumStencils());
+  }
+}
+BENCHMARK(BM_Peer_OpenSubdiv_StencilBuild_CatmullClark)->Args({158, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Peer_OpenSubdiv_StencilApply_CatmullClark(benchmark::State& state) {
+  const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
+  const int levels = static_cast<int>(state.range(1));
+  std::vector<int> sizes;
+  auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK, sizes);
+  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+  Far::StencilTableFactory::Options options;
+  options.generateIntermediateLevels = false;
+  std::unique_ptr<const Far::StencilTable> table(Far::StencilTableFactory::Create(*refiner, options));
+  // Osd::CpuEvaluator works in single precision.
+  std::vector<float> src(static_cast<std::size_t>(mesh.vertex_count()) * 3);
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    for (int i = 0; i < 3; ++i) src[static_cast<std::size_t>(v) * 3 + static_cast<std::size_t>(i)] = static_cast<float>(mesh.positions[static_cast<std::size_t>(v)][i]);
+  std::vector<float> dst(static_cast<std::size_t>(table->GetNumStencils()) * 3);
+  const Osd::BufferDescriptor desc(0, 3, 3);
+  for (auto _ : state) {
+    Osd::CpuEvaluator::EvalStencils(src.data(), desc, dst.data(), desc, table->GetSizes().data(),
+                                    table->GetOffsets().data(), table->GetControlIndices().data(),
+                                    table->GetWeights().data(), 0, table->GetNumStencils());
+    benchmark::DoNotOptimize(dst.data());
+  }
+  state.counters["rows"] = table->GetNumStencils();
+}
+BENCHMARK(BM_Peer_OpenSubdiv_StencilApply_CatmullClark)->Args({158, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace subdiv::bench

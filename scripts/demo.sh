@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs subdiv on the bundled meshes:
-# inspects each one and converts it to PLY and OFF under out/.
+# inspects each one, converts it to PLY and OFF, and refines it with
+# Catmull-Clark (and the triangle meshes with Loop), results under out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -14,5 +15,9 @@ for mesh in data/meshes/*.obj; do
   "$subdiv" info "$mesh"
   "$subdiv" convert "$mesh" "out/$name.ply"
   "$subdiv" convert "$mesh" "out/$name.off"
+  if [ "$name" = "elephant" ] || [ "$name" = "tetrahedron" ]; then
+    "$subdiv" refine "$mesh" -s loop -l 2 -o "out/${name}_loop2.obj"
+  fi
+  "$subdiv" refine "$mesh" -s catmull-clark -l 2 -o "out/${name}_catmull_clark2.obj"
 done
 echo "demo: results in out/"

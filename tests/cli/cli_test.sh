@@ -85,6 +85,24 @@ run convert-nodir 1 convert "$work/in.obj" "$work/no/such/dir/x.obj" && stderr_o
 leftovers=$(find "$work" -name '*.tmp-*' | wc -l)
 [ "$leftovers" -eq 0 ] && pass || fail "temporary files left behind"
 
+# refine and schemes
+run schemes 0 schemes && stdout_has schemes "catmull-clark" && stdout_has schemes "loop-warren"
+run refine-cc 0 refine "$meshes/cube.obj" -s catmull-clark -l 2 -o "$work/cc.obj"
+stdout_has refine-cc "wrote $work/cc.obj: 98 vertices, 96 faces"
+run refine-cc-info 0 info "$work/cc.obj" && stdout_has refine-cc-info "valences        3:8  4:90"
+run refine-loop-quads 1 refine "$meshes/cube.obj" -s loop -o "$work/loop.obj"
+stderr_one_line refine-loop-quads && stderr_has refine-loop-quads "needs a triangle mesh"
+run refine-loop-tri 0 refine "$meshes/cube.obj" -s loop --triangulate -l 3 -o "$work/loop.ply" --stats
+stdout_has refine-loop-tri "level 3: 386 vertices, 768 faces"
+run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
+run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
+run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold
+run refine-t1 0 refine "$meshes/spot_control_mesh.obj" -l 3 -o "$work/t1.ply" --threads 1
+run refine-t2 0 refine "$meshes/spot_control_mesh.obj" -l 3 -o "$work/t2.ply" --threads 2
+cmp -s "$work/t1.ply" "$work/t2.ply" && pass || fail "refine output depends on the thread count"
+run refine-self 1 refine "$work/cc.obj" -o "$work/cc.obj" && stderr_has refine-self "output is the input file"
+run refine-levels 1 refine "$meshes/cube.obj" -l 40 -o "$work/x.obj" && stderr_one_line refine-levels
+
 # Every shared mesh: exit 0 or 1, never a crash, and a failure is one line.
 if [ -d "$shared" ]; then
   while IFS= read -r -d '' mesh; do

@@ -1,0 +1,72 @@
+// Uniform refinement, topology included, the fast path and the stencil path.
+// Arguments: mesh size n, levels, threads (0 = all). The OpenSubdiv peer
+// (bench_peer_opensubdiv.cpp) runs the same inputs.
+
+#include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+
+#include "bench_meshes.h"
+#include "subdiv/refine/refine.h"
+
+namespace subdiv::bench {
+namespace {
+
+void refine_bench(benchmark::State& state, const PolygonMesh& mesh, const char* scheme_name) {
+  const Scheme& scheme = *find_scheme(scheme_name);
+  RefineOptions options;
+  options.levels = static_cast<int>(state.range(1));
+  const int threads = static_cast<int>(state.range(2));
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+  Index faces = 0;
+  for (auto _ : state) {
+    const PolygonMesh out = refine(mesh, scheme, options);
+    faces = out.face_count();
+    benchmark::DoNotOptimize(out.positions.data());
+  }
+  state.counters["faces_out"] = faces;
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * faces);
+}
+
+void BM_Refine_CatmullClark(benchmark::State& state) {
+  refine_bench(state, torus(static_cast<int>(state.range(0))), "catmull-clark");
+}
+// ~25k quads to level 4 (6.4M quads); 1M quads to level 2 (16M quads).
+BENCHMARK(BM_Refine_CatmullClark)
+    ->Args({158, 4, 1})->Args({158, 4, 2})->Args({1000, 2, 1})->Args({1000, 2, 2})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Refine_Loop(benchmark::State& state) {
+  refine_bench(state, triangulated_torus(static_cast<int>(state.range(0))), "loop");
+}
+// 1M triangles to level 2 (16M triangles).
+BENCHMARK(BM_Refine_Loop)->Args({708, 2, 1})->Args({708, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Stencil path: build the table once (coarse -> level 2), then re-apply it to
+// new positions, as for animation.
+void BM_StencilBuild_CatmullClark(benchmark::State& state) {
+  const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
+  RefineOptions options;
+  options.levels = static_cast<int>(state.range(1));
+  for (auto _ : state) {
+    const StencilTable table = compose(refine_stencils(mesh, *find_scheme("catmull-clark"), options));
+    benchmark::DoNotOptimize(table.entry_count());
+  }
+}
+BENCHMARK(BM_StencilBuild_CatmullClark)->Args({158, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_StencilApply_CatmullClark(benchmark::State& state) {
+  const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
+  RefineOptions options;
+  options.levels = static_cast<int>(state.range(1));
+  const StencilTable table = compose(refine_stencils(mesh, *find_scheme("catmull-clark"), options));
+  std::vector<Vec3> out(static_cast<std::size_t>(table.row_count()));
+  for (auto _ : state) {
+    table.apply(mesh.positions, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["rows"] = table.row_count();
+}
+BENCHMARK(BM_StencilApply_CatmullClark)->Args({158, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace subdiv::bench
