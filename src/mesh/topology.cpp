@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <numeric>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "union_find.h"
 
 namespace subdiv {
@@ -27,7 +30,6 @@ MeshTopology::MeshTopology(const PolygonMesh& mesh)
 
   build_edges();
   build_vertex_incidence();
-  count_fans();
   classify_and_order_vertices();
   build_boundary_loops();
 }
@@ -102,48 +104,64 @@ void MeshTopology::build_vertex_incidence() {
 
 // Faces at the same vertex are in one fan when they share an edge at that
 // vertex (any shared edge, manifold or not: the usual definition of a
-// non-manifold "bowtie" vertex). Works on corners, one set per fan.
-void MeshTopology::count_fans() {
-  detail::UnionFind sets(corner_count());
-  for (Index e = 0; e < edge_count(); ++e) {
-    const auto sides = edge_corners(e);
-    if (sides.size() < 2) continue;
-    for (const Index end : edge_vertices_[e]) {
-      auto corner_at = [&](Index c) { return corner_vertex_[c] == end ? c : corner_next(c); };
-      const Index first = corner_at(sides[0]);
-      for (std::size_t s = 1; s < sides.size(); ++s) sets.unite(first, corner_at(sides[s]));
+// non-manifold "bowtie" vertex) or are the same face (a face visiting the
+// vertex twice). Counted per vertex with a small local union-find over its
+// corners, so vertices are independent and processed in parallel.
+Index MeshTopology::local_fan_count(Index v, std::vector<Index>& parent, std::vector<std::pair<Index, Index>>& seen) const {
+  const auto corners = vertex_corners(v);
+  const auto k = static_cast<Index>(corners.size());
+  parent.resize(corners.size());
+  for (Index i = 0; i < k; ++i) parent[static_cast<std::size_t>(i)] = i;
+  auto find = [&](Index i) {
+    while (parent[static_cast<std::size_t>(i)] != i) i = parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
+    return i;
+  };
+  auto unite = [&](Index a, Index b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+  };
+  seen.clear();
+  for (Index i = 0; i < k; ++i) {
+    const Index c = corners[static_cast<std::size_t>(i)];
+    if (i > 0 && corner_face_[c] == corner_face_[corners[static_cast<std::size_t>(i - 1)]]) unite(i, i - 1);
+    for (const Index e : {corner_edge_[c], corner_edge_[corner_prev(c)]}) {
+      if (e == kInvalidIndex) continue;
+      auto it = std::find_if(seen.begin(), seen.end(), [e](const auto& p) { return p.first == e; });
+      if (it == seen.end()) seen.emplace_back(e, i);
+      else unite(i, it->second);
     }
   }
-  // A face that visits v twice (a degenerate face) is still one face of the fan.
-  for (Index v = 0; v < vertex_count(); ++v) {
-    const auto corners = vertex_corners(v);  // in corner order: a face's corners are adjacent
-    for (std::size_t i = 1; i < corners.size(); ++i)
-      if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) sets.unite(corners[i], corners[i - 1]);
-  }
-  fan_count_.assign(static_cast<std::size_t>(vertex_count()), 0);
-  for (Index v = 0; v < vertex_count(); ++v)
-    for (const Index c : vertex_corners(v))
-      if (sets.find(c) == c) ++fan_count_[v];
+  Index fans = 0;
+  for (Index i = 0; i < k; ++i) fans += find(i) == i;
+  return fans;
 }
 
 void MeshTopology::classify_and_order_vertices() {
   ring_ordered_.assign(static_cast<std::size_t>(vertex_count()), 0);
-  std::vector<Index> ring_corners, ring_edges;  // scratch, reused for every vertex
-  for (Index v = 0; v < vertex_count(); ++v) {
-    const auto corners = vertex_corners(v);
-    if (corners.empty()) continue;
-    bool manifold = fan_count_[v] == 1;
-    bool on_boundary = false;
-    for (const Index e : vertex_edges(v)) {
-      if (is_non_manifold_edge(e)) manifold = false;
-      if (is_boundary_edge(e)) on_boundary = true;
+  fan_count_.assign(static_cast<std::size_t>(vertex_count()), 0);
+  // Every vertex reads shared arrays and writes only its own entries and
+  // incidence slices: a parallel loop gives the same result as a serial one.
+  tbb::parallel_for(tbb::blocked_range<Index>(0, vertex_count(), 1024), [this](const tbb::blocked_range<Index>& range) {
+    std::vector<Index> ring_corners, ring_edges, parent;  // scratch, reused within the range
+    std::vector<std::pair<Index, Index>> seen;
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const auto corners = vertex_corners(v);
+      if (corners.empty()) continue;
+      fan_count_[v] = local_fan_count(v, parent, seen);
+      bool manifold = fan_count_[v] == 1;
+      bool on_boundary = false;
+      for (const Index e : vertex_edges(v)) {
+        if (is_non_manifold_edge(e)) manifold = false;
+        if (is_boundary_edge(e)) on_boundary = true;
+      }
+      for (std::size_t i = 1; i < corners.size() && manifold; ++i)
+        if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) manifold = false;
+      vertex_kind_[v] = !manifold ? VertexKind::non_manifold
+                       : on_boundary ? VertexKind::boundary : VertexKind::interior;
+      if (manifold) ring_ordered_[v] = order_ring(v, ring_corners, ring_edges) ? 1 : 0;
     }
-    for (std::size_t i = 1; i < corners.size() && manifold; ++i)
-      if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) manifold = false;
-    vertex_kind_[v] = !manifold ? VertexKind::non_manifold
-                     : on_boundary ? VertexKind::boundary : VertexKind::interior;
-    if (manifold) ring_ordered_[v] = order_ring(v, ring_corners, ring_edges) ? 1 : 0;
-  }
+  });
 }
 
 // Walks counter-clockwise around v: from a face, cross the edge that enters v

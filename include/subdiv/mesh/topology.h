@@ -102,7 +102,7 @@ class MeshTopology {
   }
   void build_edges();
   void build_vertex_incidence();
-  void count_fans();
+  Index local_fan_count(Index v, std::vector<Index>& parent, std::vector<std::pair<Index, Index>>& seen) const;
   void classify_and_order_vertices();
   bool order_ring(Index v, std::vector<Index>& ring_corners, std::vector<Index>& ring_edges);
   void build_boundary_loops();
