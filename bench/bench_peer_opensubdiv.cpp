@@ -16,18 +16,25 @@ namespace {
 
 using namespace OpenSubdiv;
 
-void build_with_opensubdiv(benchmark::State& state, const PolygonMesh& mesh) {
-  std::vector<int> sizes(static_cast<std::size_t>(mesh.face_count()));
+std::unique_ptr<Far::TopologyRefiner> osd_refiner(const PolygonMesh& mesh, Sdc::SchemeType type,
+                                                  std::vector<int>& sizes) {
+  sizes.resize(static_cast<std::size_t>(mesh.face_count()));
   for (Index f = 0; f < mesh.face_count(); ++f) sizes[static_cast<std::size_t>(f)] = mesh.face_size(f);
   Far::TopologyDescriptor desc;
   desc.numVertices = mesh.vertex_count();
   desc.numFaces = mesh.face_count();
   desc.numVertsPerFace = sizes.data();
   desc.vertIndicesPerFace = mesh.face_indices.data();
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  const Factory::Options options(Sdc::SCHEME_CATMARK, Sdc::Options());
+  return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(type, sdc)));
+}
+
+void build_with_opensubdiv(benchmark::State& state, const PolygonMesh& mesh) {
+  std::vector<int> sizes;
   for (auto _ : state) {
-    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, options));
+    auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK, sizes);
     benchmark::DoNotOptimize(refiner->GetLevel(0).GetNumEdges());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * mesh.face_count());
@@ -66,21 +73,6 @@ struct OsdVertex {
     z += w * v.z;
   }
 };
-
-std::unique_ptr<Far::TopologyRefiner> osd_refiner(const PolygonMesh& mesh, Sdc::SchemeType type,
-                                                  std::vector<int>& sizes) {
-  sizes.resize(static_cast<std::size_t>(mesh.face_count()));
-  for (Index f = 0; f < mesh.face_count(); ++f) sizes[static_cast<std::size_t>(f)] = mesh.face_size(f);
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.vertex_count();
-  desc.numFaces = mesh.face_count();
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = mesh.face_indices.data();
-  Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(type, sdc)));
-}
 
 void osd_refine_bench(benchmark::State& state, const PolygonMesh& mesh, Sdc::SchemeType type) {
   const int levels = static_cast<int>(state.range(1));

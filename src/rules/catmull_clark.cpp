@@ -34,12 +34,7 @@ void edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBuilder& mas
 }
 
 void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder& mask) {
-  switch (rule) {
-    case VertexRule::corner: return mask.add(v, 1.0);
-    case VertexRule::crease: return detail::add_crease_vertex(level, v, mask);
-    case VertexRule::smooth:
-    case VertexRule::dart: break;
-  }
+  if (detail::add_sharp_vertex(level, v, rule, mask)) return;
   const MeshTopology& t = level.topology;
   const double k = t.valence(v);
   const double k2 = k * k;

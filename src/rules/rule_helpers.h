@@ -32,6 +32,21 @@ inline void add_crease_vertex(const LevelView& level, Index v, MaskBuilder& mask
   mask.add(b, 0.125);
 }
 
+/// The rules of sharp vertices shared by Catmull-Clark and Loop: a corner
+/// stays, a crease vertex follows the curve rule. False for smooth and dart
+/// vertices, which the scheme's own rule handles.
+inline bool add_sharp_vertex(const LevelView& level, Index v, VertexRule rule, MaskBuilder& mask) {
+  if (rule == VertexRule::corner) {
+    mask.add(v, 1.0);
+    return true;
+  }
+  if (rule == VertexRule::crease) {
+    add_crease_vertex(level, v, mask);
+    return true;
+  }
+  return false;
+}
+
 /// The midpoint rule of a sharp or boundary edge.
 inline void add_edge_midpoint(const LevelView& level, Index e, MaskBuilder& mask) {
   const auto [a, b] = level.topology.edge_vertices(e);

@@ -1,0 +1,28 @@
+#pragma once
+// What the OpenSubdiv-comparison tests share about OpenSubdiv's regression
+// shapes (../shared/data/meshes/opensubdiv): their scheme, the features
+// subdiv does not refine yet, and the regression harness's boundary mode.
+
+#include <filesystem>
+#include <string>
+
+#include "subdiv/refine/refine.h"
+
+namespace subdiv::test {
+
+std::filesystem::path opensubdiv_shape_dir();
+
+/// Why subdiv cannot refine this shape as OpenSubdiv does yet, or "".
+std::string unsupported_feature(const PolygonMesh& mesh);
+
+/// Why refine() rejects the shape, or "" when it refines it. Meshes with
+/// degenerate faces (a face using a vertex twice, or with fewer than three
+/// vertices) are rejected by design; OpenSubdiv refines them.
+std::string rejection(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options);
+
+/// What OpenSubdiv's regression harness does with `t interpolateboundary`:
+/// absent or 0 means VTX_BOUNDARY_NONE, whose vertex positions are those of
+/// edge-only.
+BoundaryInterpolation harness_boundary(const Tags& tags);
+
+}  // namespace subdiv::test
