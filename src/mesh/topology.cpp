@@ -148,18 +148,27 @@ void MeshTopology::classify_and_order_vertices() {
     for (Index v = range.begin(); v != range.end(); ++v) {
       const auto corners = vertex_corners(v);
       if (corners.empty()) continue;
-      fan_count_[v] = local_fan_count(v, parent, seen);
-      bool manifold = fan_count_[v] == 1;
-      bool on_boundary = false;
+      bool non_manifold_edge = false, on_boundary = false, repeated_face = false;
       for (const Index e : vertex_edges(v)) {
-        if (is_non_manifold_edge(e)) manifold = false;
+        if (is_non_manifold_edge(e)) non_manifold_edge = true;
         if (is_boundary_edge(e)) on_boundary = true;
       }
-      for (std::size_t i = 1; i < corners.size() && manifold; ++i)
-        if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) manifold = false;
-      vertex_kind_[v] = !manifold ? VertexKind::non_manifold
-                       : on_boundary ? VertexKind::boundary : VertexKind::interior;
-      if (manifold) ring_ordered_[v] = order_ring(v, ring_corners, ring_edges) ? 1 : 0;
+      for (std::size_t i = 1; i < corners.size(); ++i)
+        if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) repeated_face = true;
+      const VertexKind manifold_kind = on_boundary ? VertexKind::boundary : VertexKind::interior;
+      // A complete ring walk proves a single fan; only when it fails are the
+      // fans counted (the common, manifold case stays cheap).
+      if (!non_manifold_edge && !repeated_face) {
+        vertex_kind_[v] = manifold_kind;
+        if (order_ring(v, ring_corners, ring_edges)) {
+          fan_count_[v] = 1;
+          ring_ordered_[v] = 1;
+          continue;
+        }
+      }
+      fan_count_[v] = local_fan_count(v, parent, seen);
+      const bool manifold = fan_count_[v] == 1 && !non_manifold_edge && !repeated_face;
+      vertex_kind_[v] = manifold ? manifold_kind : VertexKind::non_manifold;
     }
   });
 }

@@ -65,6 +65,7 @@ void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const 
   tbb::parallel_for(tbb::blocked_range<Index>(0, map.child_vertex_count, 2048),
                     [&](const tbb::blocked_range<Index>& range) {
                       MaskBuilder mask;
+                      mask.reserve(64);
                       for (Index i = range.begin(); i != range.end(); ++i) {
                         child_mask(parent, scheme, map, i, mask);
                         fn(i, mask);

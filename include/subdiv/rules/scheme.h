@@ -57,6 +57,10 @@ class MaskBuilder {
     weights_.push_back(scale_ * weight);
   }
   void set_scale(double scale) { scale_ = scale; }
+  void reserve(std::size_t entries) {
+    vertices_.reserve(entries);
+    weights_.reserve(entries);
+  }
   std::span<const Index> vertices() const { return vertices_; }
   std::span<const double> weights() const { return weights_; }
   std::size_t size() const { return vertices_.size(); }
