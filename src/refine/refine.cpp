@@ -171,7 +171,7 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
                          report.error_count();
     ValidationReport copy = report;
     if (fixable) {
-      for (auto& issue : copy.issues) issue.message += " (refining with --allow-non-manifold treats it as sharp)";
+      for (auto& issue : copy.issues) issue.message += " (allowing non-manifold input, subdiv refine --allow-non-manifold, makes it sharp)";
     }
     require_valid(copy, path);
   }

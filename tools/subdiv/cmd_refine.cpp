@@ -50,7 +50,8 @@ int run_refine(const RefineCommandOptions& opt) {
   for (const auto& w : file.warnings) std::fprintf(stderr, "subdiv: warning: %s: %s\n", opt.input.c_str(), w.c_str());
   if (opt.triangulate && scheme->needs_triangles) {
     file.mesh = triangulate(file.mesh);
-    file.lines = SourceLines{file.lines.path, file.lines.vertex_lines, {}, {}, {}, {}};  // faces renumbered
+    file.lines.face_lines.clear();  // faces and holes were renumbered
+    file.lines.hole_lines.clear();
   }
   if (file.mesh.tags.crease_method == CreaseMethod::chaikin)
     throw InvalidInputError(opt.input + ": creasemethod chaikin is not supported yet (only the uniform method)");
