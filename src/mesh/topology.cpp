@@ -58,23 +58,45 @@ void MeshTopology::build_edges() {
     }
   }
 
-  edge_corner_offsets_.clear();
-  edge_corners_.reserve(buckets.size());
-  for (Index v = 0; v < nv; ++v) {
-    auto first = buckets.begin() + bucket_offsets[v], last = buckets.begin() + bucket_offsets[v + 1];
-    std::sort(first, last, [](const HalfEdge& l, const HalfEdge& r) {
-      return l.other != r.other ? l.other < r.other : l.corner < r.corner;
-    });
-    for (auto it = first; it != last; ++it) {
-      if (it == first || it->other != (it - 1)->other) {
-        edge_corner_offsets_.push_back(static_cast<Index>(edge_corners_.size()));
-        edge_vertices_.push_back({v, it->other});
-      }
-      corner_edge_[it->corner] = static_cast<Index>(edge_vertices_.size()) - 1;
-      edge_corners_.push_back(it->corner);
+  // Buckets are independent: sort them and count their distinct edges in
+  // parallel, number the edges by a prefix sum, then fill in parallel.
+  std::vector<Index> first_edge(static_cast<std::size_t>(nv) + 1, 0);
+  auto bucket = [&](Index v) {
+    return std::pair(buckets.begin() + bucket_offsets[v], buckets.begin() + bucket_offsets[v + 1]);
+  };
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      auto [first, last] = bucket(v);
+      std::sort(first, last, [](const HalfEdge& l, const HalfEdge& r) {
+        return l.other != r.other ? l.other < r.other : l.corner < r.corner;
+      });
+      Index distinct = 0;
+      for (auto it = first; it != last; ++it) distinct += it == first || it->other != (it - 1)->other;
+      first_edge[static_cast<std::size_t>(v) + 1] = distinct;
     }
-  }
-  edge_corner_offsets_.push_back(static_cast<Index>(edge_corners_.size()));
+  });
+  counts_to_offsets(first_edge);
+  const Index ne = first_edge.back();
+  edge_vertices_.resize(static_cast<std::size_t>(ne));
+  edge_corner_offsets_.resize(static_cast<std::size_t>(ne) + 1);
+  edge_corners_.resize(buckets.size());
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      auto [first, last] = bucket(v);
+      Index e = first_edge[static_cast<std::size_t>(v)] - 1;
+      for (auto it = first; it != last; ++it) {
+        const auto position = static_cast<Index>(it - buckets.begin());
+        if (it == first || it->other != (it - 1)->other) {
+          ++e;
+          edge_vertices_[static_cast<std::size_t>(e)] = {v, it->other};
+          edge_corner_offsets_[static_cast<std::size_t>(e)] = position;
+        }
+        corner_edge_[it->corner] = e;
+        edge_corners_[static_cast<std::size_t>(position)] = it->corner;
+      }
+    }
+  });
+  edge_corner_offsets_[static_cast<std::size_t>(ne)] = static_cast<Index>(edge_corners_.size());
 }
 
 void MeshTopology::build_vertex_incidence() {

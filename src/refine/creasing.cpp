@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace subdiv {
 
 double subdivide_sharpness(double s) {
@@ -18,6 +21,49 @@ VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) {
     default: return VertexRule::corner;
   }
 }
+
+namespace {
+
+// The rules of vertex v now and one level down, and the blend weight.
+void classify_vertex(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double vs, LevelCreasing& out) {
+  const auto vi = static_cast<std::size_t>(v);
+  int sharp = 0, child_sharp = 0, infinitely_sharp = 0;
+  for (const Index e : topo.vertex_edges(v)) {
+    const auto ei = static_cast<std::size_t>(e);
+    sharp += out.edge_sharpness[ei] > 0.0;
+    child_sharp += out.child_edge_sharpness[ei] > 0.0;
+    infinitely_sharp += out.edge_sharpness[ei] >= kInfiniteSharpness;
+  }
+  const VertexKind kind = topo.vertex_kind(v);
+  if (kind == VertexKind::isolated) vs = kInfiniteSharpness;
+  if (kind != VertexKind::isolated && !topo.ring_ordered(v) && infinitely_sharp != 2) vs = kInfiniteSharpness;
+  if (boundary == BoundaryInterpolation::edge_and_corner && kind == VertexKind::boundary &&
+      topo.vertex_face_count(v) == 1)
+    vs = kInfiniteSharpness;
+
+  const double child_vs = subdivide_sharpness(vs);
+  out.vertex_rule[vi] = vertex_rule_for(vs, sharp);
+  out.child_vertex_rule[vi] = vertex_rule_for(child_vs, child_sharp);
+  if (out.vertex_rule[vi] != out.child_vertex_rule[vi]) {
+    // Sdc::Crease::ComputeFractionalWeightAtVertex.
+    int transitions = 0;
+    double sum = 0.0;
+    if (vs > 0.0 && child_vs <= 0.0) {
+      ++transitions;
+      sum += vs;
+    }
+    for (const Index e : topo.vertex_edges(v)) {
+      const auto ei = static_cast<std::size_t>(e);
+      if (out.edge_sharpness[ei] > 0.0 && out.child_edge_sharpness[ei] <= 0.0) {
+        ++transitions;
+        sum += out.edge_sharpness[ei];
+      }
+    }
+    out.parent_rule_weight[vi] = transitions > 0 ? std::min(1.0, sum / transitions) : 0.0;
+  }
+}
+
+}  // namespace
 
 LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo, BoundaryInterpolation boundary) {
   const auto ne = static_cast<std::size_t>(topo.edge_count());
@@ -43,44 +89,11 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
   out.vertex_rule.resize(nv);
   out.child_vertex_rule.resize(nv);
   out.parent_rule_weight.assign(nv, 1.0);
-  for (Index v = 0; v < topo.vertex_count(); ++v) {
-    const auto vi = static_cast<std::size_t>(v);
-    int sharp = 0, child_sharp = 0, infinitely_sharp = 0;
-    for (const Index e : topo.vertex_edges(v)) {
-      const auto ei = static_cast<std::size_t>(e);
-      sharp += out.edge_sharpness[ei] > 0.0;
-      child_sharp += out.child_edge_sharpness[ei] > 0.0;
-      infinitely_sharp += out.edge_sharpness[ei] >= kInfiniteSharpness;
-    }
-    const VertexKind kind = topo.vertex_kind(v);
-    double& vs = vertex_sharpness[vi];
-    if (kind == VertexKind::isolated) vs = kInfiniteSharpness;
-    if (kind != VertexKind::isolated && !topo.ring_ordered(v) && infinitely_sharp != 2) vs = kInfiniteSharpness;
-    if (boundary == BoundaryInterpolation::edge_and_corner && kind == VertexKind::boundary &&
-        topo.vertex_face_count(v) == 1)
-      vs = kInfiniteSharpness;
-
-    const double child_vs = subdivide_sharpness(vs);
-    out.vertex_rule[vi] = vertex_rule_for(vs, sharp);
-    out.child_vertex_rule[vi] = vertex_rule_for(child_vs, child_sharp);
-    if (out.vertex_rule[vi] != out.child_vertex_rule[vi]) {
-      // Sdc::Crease::ComputeFractionalWeightAtVertex.
-      int transitions = 0;
-      double sum = 0.0;
-      if (vs > 0.0 && child_vs <= 0.0) {
-        ++transitions;
-        sum += vs;
-      }
-      for (const Index e : topo.vertex_edges(v)) {
-        const auto ei = static_cast<std::size_t>(e);
-        if (out.edge_sharpness[ei] > 0.0 && out.child_edge_sharpness[ei] <= 0.0) {
-          ++transitions;
-          sum += out.edge_sharpness[ei];
-        }
-      }
-      out.parent_rule_weight[vi] = transitions > 0 ? std::min(1.0, sum / transitions) : 0.0;
-    }
-  }
+  // Every vertex writes only its own entries: a parallel loop.
+  tbb::parallel_for(tbb::blocked_range<Index>(0, topo.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& r) {
+    for (Index v = r.begin(); v != r.end(); ++v)
+      classify_vertex(topo, boundary, v, vertex_sharpness[static_cast<std::size_t>(v)], out);
+  });
   return out;
 }
 
