@@ -78,15 +78,36 @@ struct Level {
   SplitMap map;
 };
 
-// One step: child topology plus classification-backed masks handed to `fn`.
+// One step: the child's faces and tags, then `fn` with the parent level and
+// its creasing for the masks.
 template <typename Fn>
-Level refine_step(const PolygonMesh& parent, const Scheme& scheme, BoundaryInterpolation boundary, Fn&& fn) {
-  const MeshTopology topology(parent);
+Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const Scheme& scheme,
+                  BoundaryInterpolation boundary, Fn&& fn) {
   const LevelCreasing creasing = compute_creasing(parent, topology, boundary);
   Level level;
   level.map = split_topology(parent, topology, scheme.split, level.child);
   fn(ParentLevel{parent, topology, creasing}, level);
   return level;
+}
+
+// The levels one after the other, each parent's topology derived from its
+// own parent's where the split allows it (quad split of a manifold level),
+// built from the faces otherwise; `step` refines one level.
+template <typename Step>
+PolygonMesh refine_levels(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options, Step&& step) {
+  PolygonMesh current = mesh;
+  std::optional<MeshTopology> topology;
+  for (int l = 0; l < options.levels; ++l) {
+    if (!topology) topology.emplace(current);
+    Level level = step(current, *topology);
+    if (l + 1 < options.levels && scheme.split == SplitRule::quad)
+      topology = MeshTopology::from_quad_split(*topology, level.child);
+    else
+      topology.reset();
+    current = std::move(level.child);
+    if (options.on_level) options.on_level(l + 1, current);
+  }
+  return current;
 }
 
 void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view, Level& level) {
@@ -189,17 +210,15 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
   check_refinable(mesh, scheme, options);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
-  PolygonMesh current = mesh;
+  PolygonMesh result;
   run_with_threads(options.threads, [&] {
-    for (int l = 0; l < options.levels; ++l) {
-      Level level = refine_step(current, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
-        evaluate_fast(current, scheme, view, lv);
+    result = refine_levels(mesh, scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
+      return refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& level) {
+        evaluate_fast(parent, scheme, view, level);
       });
-      current = std::move(level.child);
-      if (options.on_level) options.on_level(l + 1, current);
-    }
+    });
   });
-  return current;
+  return result;
 }
 
 std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
@@ -207,18 +226,16 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
   check_refinable(mesh, scheme, options);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   std::vector<StencilTable> tables;
-  PolygonMesh current = mesh;
   run_with_threads(options.threads, [&] {
-    for (int l = 0; l < options.levels; ++l) {
-      Level level = refine_step(current, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
-        tables.push_back(record_stencils(current, scheme, view, lv.map));
+    PolygonMesh last = refine_levels(mesh, scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
+      Level level = refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
+        tables.push_back(record_stencils(parent, scheme, view, lv.map));
       });
-      if (final_level) tables.back().apply(current.positions, level.child.positions);
-      current = std::move(level.child);
-      if (options.on_level) options.on_level(l + 1, current);
-    }
+      if (final_level) tables.back().apply(parent.positions, level.child.positions);
+      return level;
+    });
+    if (final_level) *final_level = std::move(last);
   });
-  if (final_level) *final_level = std::move(current);
   return tables;
 }
 

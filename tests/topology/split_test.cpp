@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "subdiv/core/error.h"
+#include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/mesh_stats.h"
 #include "subdiv/mesh/validation.h"
 #include "support/test_meshes.h"
@@ -125,6 +126,48 @@ TEST(Split, FaceVaryingDataIsLinearWithinFaces) {
   EXPECT_EQ(value(3), (std::pair<double, double>(0, 0.5)));
   // The second island keeps its own values across the seam.
   EXPECT_EQ(value(4 * 4 + 2), (std::pair<double, double>(5.5, 0.5)));
+}
+
+}  // namespace
+}  // namespace subdiv
+
+namespace subdiv {
+namespace {
+
+// The derived topology of a quad-split level equals the generic construction
+// from the child's faces, array for array, level after level.
+TEST(QuadSplit, DerivedTopologyEqualsTheGenericOne) {
+  std::vector<std::pair<std::string, PolygonMesh>> cases;
+  cases.emplace_back("cube", test::cube());
+  cases.emplace_back("grid", test::quad_grid(4, 3));
+  cases.emplace_back("triangles", test::triangle_grid(3, 2));
+  cases.emplace_back("spot", read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh);
+  PolygonMesh with_isolated = test::quad_grid(2, 2);
+  with_isolated.positions.push_back({9, 9, 9});
+  cases.emplace_back("isolated vertex", with_isolated);
+  PolygonMesh polygons = make_mesh({{0, 0, 0}, {1, 0, 0}, {2, 0.5, 0}, {1, 1, 0}, {0, 1, 0}, {3, 0, 0}},
+                                   {{0, 1, 2, 3, 4}, {1, 5, 2}});
+  cases.emplace_back("polygons", polygons);
+  for (const auto& [name, mesh] : cases) {
+    PolygonMesh parent = mesh;
+    std::optional<MeshTopology> topology = MeshTopology(parent);
+    for (int level = 1; level <= 3; ++level) {
+      PolygonMesh child;
+      split_topology(parent, *topology, SplitRule::quad, child);
+      const std::optional<MeshTopology> derived = MeshTopology::from_quad_split(*topology, child);
+      ASSERT_TRUE(derived.has_value()) << name;
+      const MeshTopology generic(child);
+      EXPECT_TRUE(*derived == generic) << name << " level " << level;
+      parent = std::move(child);
+      topology = derived;
+    }
+  }
+  // Non-manifold parents are left to the generic construction.
+  const PolygonMesh bowtie = make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}}, {{0, 1, 2}, {0, 3, 4}});
+  PolygonMesh child;
+  const MeshTopology t(bowtie);
+  split_topology(bowtie, t, SplitRule::quad, child);
+  EXPECT_FALSE(MeshTopology::from_quad_split(t, child).has_value());
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // per-vertex bucket sort of half-edges (buckets are as small as valences).
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -26,6 +27,7 @@ enum class VertexKind : std::uint8_t {
 struct BoundaryLoop {
   std::vector<Index> vertices;
   bool ordered = false;
+  friend bool operator==(const BoundaryLoop&, const BoundaryLoop&) = default;
 };
 
 class MeshTopology {
@@ -34,6 +36,19 @@ class MeshTopology {
   /// (see check_indices). Any other defect (degenerate faces, non-manifold
   /// elements, flipped faces) is represented, not rejected.
   explicit MeshTopology(const PolygonMesh& mesh);
+
+  /// The topology of `child`, the quad split of the mesh `parent` describes
+  /// (child vertices [face points | edge points | vertex points], child face
+  /// = parent corner), derived from the parent's in linear time without
+  /// sorting. Identical to MeshTopology(child). Requires every parent vertex
+  /// to have an ordered ring or no face; returns nullopt otherwise, and the
+  /// caller builds the topology from the child's faces.
+  static std::optional<MeshTopology> from_quad_split(const MeshTopology& parent, const PolygonMesh& child);
+
+  /// True when every vertex has an ordered ring or no face at all.
+  bool all_rings_ordered() const;
+
+  friend bool operator==(const MeshTopology&, const MeshTopology&) = default;
 
   Index vertex_count() const { return static_cast<Index>(vertex_kind_.size()); }
   Index face_count() const { return static_cast<Index>(face_offsets_.size()) - 1; }
@@ -96,6 +111,7 @@ class MeshTopology {
   const std::vector<BoundaryLoop>& boundary_loops() const { return boundary_loops_; }
 
  private:
+  MeshTopology() = default;
   static std::span<const Index> span_of(const std::vector<Index>& offsets,
                                         const std::vector<Index>& items, Index i) {
     return {items.data() + offsets[i], static_cast<std::size_t>(offsets[i + 1] - offsets[i])};
