@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "subdiv/core/error.h"
+#include "support/parse_errors.h"
 #include "support/test_meshes.h"
 #include "subdiv/io/off.h"
 
@@ -20,23 +21,6 @@ void expect_same_geometry(const PolygonMesh& a, const PolygonMesh& b) {
   EXPECT_EQ(a.face_indices, b.face_indices);
 }
 
-template <typename F>
-std::string parse_error_message(F&& f) {
-  try {
-    f();
-  } catch (const ParseError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    return std::string("WRONG EXCEPTION TYPE: ") + e.what();
-  }
-  return "NO EXCEPTION";
-}
-
-#define EXPECT_PARSE_ERROR(expr, fragment)                                            \
-  do {                                                                                \
-    const std::string message_ = parse_error_message([&] { (void)(expr); });          \
-    EXPECT_NE(message_.find(fragment), std::string::npos) << "message: " << message_; \
-  } while (false)
 
 // The three-vertex, one-triangle mesh most of the variants below describe.
 void expect_triangle(const MeshFile& file) {

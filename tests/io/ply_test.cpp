@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "subdiv/core/error.h"
+#include "support/parse_errors.h"
 #include "support/test_meshes.h"
 #include "subdiv/io/ply.h"
 
@@ -65,23 +66,6 @@ class Bytes {
   std::string out_;
 };
 
-template <typename F>
-std::string parse_error_message(F&& f) {
-  try {
-    f();
-  } catch (const ParseError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    return std::string("WRONG EXCEPTION TYPE: ") + e.what();
-  }
-  return "NO EXCEPTION";
-}
-
-#define EXPECT_PARSE_ERROR(expr, fragment)                                          \
-  do {                                                                              \
-    const std::string message_ = parse_error_message([&] { (void)(expr); });        \
-    EXPECT_NE(message_.find(fragment), std::string::npos) << "message: " << message_; \
-  } while (false)
 
 // --- round trips ---------------------------------------------------------------
 
@@ -474,7 +458,7 @@ TEST(PlyErrors, LyingVertexCountFailsBeforeAllocating) {
       EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
     }
   }
-  const std::string message = parse_error_message([] {
+  const std::string message = test::parse_error_message([] {
     parse_ply(
         "ply\nformat binary_little_endian 1.0\nelement vertex 1099511627776\nproperty float x\n"
         "property float y\nproperty float z\nend_header\n0123456789ab");
