@@ -91,8 +91,8 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const
 }
 
 // The levels one after the other, each parent's topology derived from its
-// own parent's where the split allows it (quad split of a manifold level),
-// built from the faces otherwise; `step` refines one level.
+// own parent's where the split allows it (a manifold level), built from the
+// faces otherwise; `step` refines one level.
 template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options, Step&& step) {
   PolygonMesh current = mesh;
@@ -100,10 +100,9 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, const Scheme& scheme, const R
   for (int l = 0; l < options.levels; ++l) {
     if (!topology) topology.emplace(current);
     Level level = step(current, *topology);
-    if (l + 1 < options.levels && scheme.split == SplitRule::quad)
-      topology = MeshTopology::from_quad_split(*topology, level.child);
-    else
-      topology.reset();
+    if (l + 1 == options.levels) topology.reset();
+    else if (scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
+    else topology = MeshTopology::from_triangle_split(*topology, level.child);
     current = std::move(level.child);
     if (options.on_level) options.on_level(l + 1, current);
   }

@@ -172,3 +172,38 @@ TEST(QuadSplit, DerivedTopologyEqualsTheGenericOne) {
 
 }  // namespace
 }  // namespace subdiv
+
+namespace subdiv {
+namespace {
+
+TEST(TriangleSplit, DerivedTopologyEqualsTheGenericOne) {
+  std::vector<std::pair<std::string, PolygonMesh>> cases;
+  cases.emplace_back("tetrahedron", test::tetrahedron());
+  cases.emplace_back("grid", test::triangle_grid(4, 3));
+  cases.emplace_back("elephant", read_mesh(test::bundled_path("elephant.obj")).mesh);
+  PolygonMesh with_isolated = test::triangle_grid(2, 2);
+  with_isolated.positions.push_back({9, 9, 9});
+  cases.emplace_back("isolated vertex", with_isolated);
+  for (const auto& [name, mesh] : cases) {
+    PolygonMesh parent = mesh;
+    std::optional<MeshTopology> topology = MeshTopology(parent);
+    for (int level = 1; level <= (name == "elephant" ? 1 : 3); ++level) {
+      PolygonMesh child;
+      split_topology(parent, *topology, SplitRule::triangle, child);
+      const std::optional<MeshTopology> derived = MeshTopology::from_triangle_split(*topology, child);
+      ASSERT_TRUE(derived.has_value()) << name;
+      EXPECT_TRUE(*derived == MeshTopology(child)) << name << " level " << level;
+      parent = std::move(child);
+      topology = derived;
+    }
+  }
+  // Two triangles on the same three vertices would merge child edges.
+  const PolygonMesh pillow = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 1}});
+  PolygonMesh child;
+  const MeshTopology t(pillow);
+  split_topology(pillow, t, SplitRule::triangle, child);
+  EXPECT_FALSE(MeshTopology::from_triangle_split(t, child).has_value());
+}
+
+}  // namespace
+}  // namespace subdiv

@@ -44,6 +44,9 @@ class MeshTopology {
   /// to have an ordered ring or no face; returns nullopt otherwise, and the
   /// caller builds the topology from the child's faces.
   static std::optional<MeshTopology> from_quad_split(const MeshTopology& parent, const PolygonMesh& child);
+  /// The same for the triangle split of a triangle mesh (child vertices
+  /// [edge points | vertex points], child faces 4f .. 4f+3).
+  static std::optional<MeshTopology> from_triangle_split(const MeshTopology& parent, const PolygonMesh& child);
 
   /// True when every vertex has an ordered ring or no face at all.
   bool all_rings_ordered() const;

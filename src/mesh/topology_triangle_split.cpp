@@ -1,0 +1,182 @@
+// The topology of a triangle-split level derived from its parent's, without
+// the sorts of the generic construction. Child vertices are numbered
+// [edge points E(e) | vertex points V(v)], so the edges whose smaller end is
+// E(e) are its interior edges (E(e), E(e')), e' > e, in increasing e', then
+// its two halves (E(e), V(a)), (E(e), V(b)), a < b: the generic (min, max)
+// order. Child face 4f+i = [V(v_i), E(e_i), E(e_{i-1})] (e_i leaves corner
+// i), 4f+3 = [E(e_0), E(e_1), E(e_2)].
+
+#include <algorithm>
+#include <atomic>
+#include <numeric>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "subdiv/mesh/topology.h"
+
+namespace subdiv {
+
+std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology& p, const PolygonMesh& child) {
+  if (!p.all_rings_ordered()) return std::nullopt;
+  const Index nf = p.face_count(), ne = p.edge_count(), nv = p.vertex_count();
+  for (Index f = 0; f < nf; ++f)
+    if (p.face_size(f) != 3) return std::nullopt;
+  const Index vertex_point = ne;
+
+  // The interior partners of each edge point: the other edges of its faces
+  // with a larger index. A repeated partner (two faces on the same three
+  // vertices) would merge child edges: leave that to the generic build.
+  std::vector<Index> first(static_cast<std::size_t>(ne) + 1, 0);
+  std::vector<Index> partner_offsets(static_cast<std::size_t>(ne) + 1, 0);
+  for (Index e = 0; e < ne; ++e) partner_offsets[e + 1] = partner_offsets[e] + 2 * p.edge_face_count(e);
+  std::vector<Index> partners(static_cast<std::size_t>(partner_offsets.back()));
+  std::atomic<bool> simple = true;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index e = range.begin(); e != range.end(); ++e) {
+      Index* out = partners.data() + partner_offsets[e];
+      Index* begin = out;
+      for (const Index s : p.edge_corners(e)) {
+        for (const Index other : {p.corner_edge_[p.corner_next(s)], p.corner_edge_[p.corner_prev(s)]})
+          if (other > e) *out++ = other;
+      }
+      std::sort(begin, out);
+      if (std::adjacent_find(begin, out) != out) simple = false;
+      first[e + 1] = static_cast<Index>(out - begin) + 2;
+    }
+  });
+  if (!simple) return std::nullopt;
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  const Index child_edges = first.back();
+
+  auto interior = [&](Index a, Index b) {  // the child edge (E(a), E(b))
+    const Index lo = std::min(a, b), hi = std::max(a, b);
+    const Index* begin = partners.data() + partner_offsets[lo];
+    const Index* end = begin + (first[lo + 1] - first[lo] - 2);
+    return first[lo] + static_cast<Index>(std::lower_bound(begin, end, hi) - begin);
+  };
+  auto half = [&](Index e, Index end) { return first[e + 1] - 2 + (p.edge_vertices_[e][0] == end ? 0 : 1); };
+
+  MeshTopology t;
+  t.face_offsets_ = child.face_offsets;
+  t.corner_vertex_ = child.face_indices;
+  const auto child_corners = static_cast<std::size_t>(12) * static_cast<std::size_t>(nf);
+  t.corner_face_.resize(child_corners);
+  t.corner_edge_.resize(child_corners);
+  t.edge_vertices_.resize(static_cast<std::size_t>(child_edges));
+  t.edge_corner_offsets_.assign(static_cast<std::size_t>(child_edges) + 1, 0);
+
+  // Side counts: interior edges have two, halves as many as their parent.
+  for (Index e = 0; e < ne; ++e) {
+    for (Index i = first[e]; i < first[e + 1] - 2; ++i) t.edge_corner_offsets_[i + 1] = 2;
+    t.edge_corner_offsets_[first[e + 1] - 1] = p.edge_face_count(e);
+    t.edge_corner_offsets_[first[e + 1]] = p.edge_face_count(e);
+  }
+  std::partial_sum(t.edge_corner_offsets_.begin(), t.edge_corner_offsets_.end(), t.edge_corner_offsets_.begin());
+  t.edge_corners_.resize(static_cast<std::size_t>(t.edge_corner_offsets_.back()));
+
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 2048), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f) {
+      Index v[3], e[3];
+      for (Index i = 0; i < 3; ++i) {
+        v[i] = p.corner_vertex_[3 * f + i];
+        e[i] = p.corner_edge_[3 * f + i];
+      }
+      for (Index k = 0; k < 12; ++k) t.corner_face_[12 * f + k] = 4 * f + k / 3;
+      for (Index i = 0; i < 3; ++i) {
+        const Index prev = (i + 2) % 3;
+        Index* c = t.corner_edge_.data() + 12 * f + 3 * i;
+        c[0] = half(e[i], v[i]);
+        c[1] = interior(e[i], e[prev]);
+        c[2] = half(e[prev], v[i]);
+        t.corner_edge_[12 * f + 9 + i] = interior(e[i], e[(i + 1) % 3]);
+        // Sides of the interior edge (E(e_i), E(e_prev)): corner 1 of child face
+        // 4f+i and corner prev of the centre. Each face owns its interior edges.
+        const Index ie = c[1];
+        const Index a = 12 * f + 3 * i + 1, b = 12 * f + 9 + prev;
+        t.edge_vertices_[ie] = {std::min(e[i], e[prev]), std::max(e[i], e[prev])};
+        t.edge_corners_[t.edge_corner_offsets_[ie]] = std::min(a, b);
+        t.edge_corners_[t.edge_corner_offsets_[ie] + 1] = std::max(a, b);
+      }
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index e = range.begin(); e != range.end(); ++e) {
+      for (Index h = 0; h < 2; ++h) {
+        const Index end = p.edge_vertices_[e][h];
+        const Index ce = first[e + 1] - 2 + h;
+        t.edge_vertices_[ce] = {e, vertex_point + end};
+        Index* out = t.edge_corners_.data() + t.edge_corner_offsets_[ce];
+        Index* begin = out;
+        for (const Index s : p.edge_corners(e)) {
+          const Index f = s / 3, i = s % 3;
+          *out++ = p.corner_vertex_[s] == end ? 12 * f + 3 * i : 12 * f + 3 * ((i + 1) % 3) + 2;
+        }
+        std::sort(begin, out);
+      }
+    }
+  });
+
+  // Vertex incidence: edge points (walked), then vertex points (inherited).
+  const Index child_vertices = ne + nv;
+  t.vertex_corner_offsets_.assign(static_cast<std::size_t>(child_vertices) + 1, 0);
+  t.vertex_edge_offsets_.assign(static_cast<std::size_t>(child_vertices) + 1, 0);
+  for (Index e = 0; e < ne; ++e) {
+    t.vertex_corner_offsets_[e + 1] = 3 * p.edge_face_count(e);
+    t.vertex_edge_offsets_[e + 1] = 2 + 2 * p.edge_face_count(e);
+  }
+  for (Index v = 0; v < nv; ++v) {
+    t.vertex_corner_offsets_[vertex_point + v + 1] = p.vertex_face_count(v);
+    t.vertex_edge_offsets_[vertex_point + v + 1] = p.valence(v);
+  }
+  std::partial_sum(t.vertex_corner_offsets_.begin(), t.vertex_corner_offsets_.end(), t.vertex_corner_offsets_.begin());
+  std::partial_sum(t.vertex_edge_offsets_.begin(), t.vertex_edge_offsets_.end(), t.vertex_edge_offsets_.begin());
+  t.vertex_corners_.resize(static_cast<std::size_t>(t.vertex_corner_offsets_.back()));
+  t.vertex_edges_.resize(static_cast<std::size_t>(t.vertex_edge_offsets_.back()));
+  t.vertex_kind_.assign(static_cast<std::size_t>(child_vertices), VertexKind::interior);
+  t.ring_ordered_.assign(static_cast<std::size_t>(child_vertices), 1);
+  t.fan_count_.assign(static_cast<std::size_t>(child_vertices), 1);
+
+  std::atomic<bool> walked = true;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
+    std::vector<Index> ring_corners, ring_edges;
+    for (Index e = range.begin(); e != range.end(); ++e) {
+      Index* corners = t.vertex_corners_.data() + t.vertex_corner_offsets_[e];
+      Index* c_out = corners;
+      Index* edges = t.vertex_edges_.data() + t.vertex_edge_offsets_[e];
+      for (const Index s : p.edge_corners(e)) {
+        const Index f = s / 3, i = s % 3;
+        *c_out++ = 12 * f + 3 * i + 1;
+        *c_out++ = 12 * f + 3 * ((i + 1) % 3) + 2;
+        *c_out++ = 12 * f + 9 + i;
+        *edges++ = interior(e, p.corner_edge_[p.corner_next(s)]);
+        *edges++ = interior(e, p.corner_edge_[p.corner_prev(s)]);
+      }
+      *edges++ = first[e + 1] - 2;
+      *edges++ = first[e + 1] - 1;
+      std::sort(corners, c_out);  // the generic walk starts at the smallest corner
+      t.vertex_kind_[e] = p.is_boundary_edge(e) ? VertexKind::boundary : VertexKind::interior;
+      if (!t.order_ring(e, ring_corners, ring_edges)) walked = false;
+    }
+  });
+  if (!walked) return std::nullopt;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const Index cv = vertex_point + v;
+      t.vertex_kind_[cv] = p.vertex_kind_[v];
+      if (p.vertex_kind_[v] == VertexKind::isolated) {
+        t.ring_ordered_[cv] = 0;
+        t.fan_count_[cv] = 0;
+        continue;
+      }
+      Index* corners = t.vertex_corners_.data() + t.vertex_corner_offsets_[cv];
+      Index* edges = t.vertex_edges_.data() + t.vertex_edge_offsets_[cv];
+      for (const Index c : p.vertex_corners(v)) *corners++ = 12 * (c / 3) + 3 * (c % 3);
+      for (const Index e : p.vertex_edges(v)) *edges++ = half(e, v);
+    }
+  });
+  t.build_boundary_loops();
+  return t;
+}
+
+}  // namespace subdiv
