@@ -250,6 +250,17 @@ Index MeshTopology::find_edge(Index a, Index b) const {
                                                   : kInvalidIndex;
 }
 
+void MeshTopology::lay_out_vertex_incidence() {
+  const std::size_t n = vertex_corner_offsets_.size() - 1;
+  std::partial_sum(vertex_corner_offsets_.begin(), vertex_corner_offsets_.end(), vertex_corner_offsets_.begin());
+  std::partial_sum(vertex_edge_offsets_.begin(), vertex_edge_offsets_.end(), vertex_edge_offsets_.begin());
+  vertex_corners_.resize(static_cast<std::size_t>(vertex_corner_offsets_.back()));
+  vertex_edges_.resize(static_cast<std::size_t>(vertex_edge_offsets_.back()));
+  vertex_kind_.assign(n, VertexKind::interior);
+  ring_ordered_.assign(n, 1);
+  fan_count_.assign(n, 1);
+}
+
 void MeshTopology::build_boundary_loops() {
   detail::UnionFind sets(vertex_count());
   std::vector<Index> boundary_edges;

@@ -13,7 +13,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "subdiv/mesh/topology.h"
+#include "topology_derived.h"
 
 namespace subdiv {
 
@@ -129,13 +129,7 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
     t.vertex_corner_offsets_[vertex_point + v + 1] = p.vertex_face_count(v);
     t.vertex_edge_offsets_[vertex_point + v + 1] = p.valence(v);
   }
-  std::partial_sum(t.vertex_corner_offsets_.begin(), t.vertex_corner_offsets_.end(), t.vertex_corner_offsets_.begin());
-  std::partial_sum(t.vertex_edge_offsets_.begin(), t.vertex_edge_offsets_.end(), t.vertex_edge_offsets_.begin());
-  t.vertex_corners_.resize(static_cast<std::size_t>(t.vertex_corner_offsets_.back()));
-  t.vertex_edges_.resize(static_cast<std::size_t>(t.vertex_edge_offsets_.back()));
-  t.vertex_kind_.assign(static_cast<std::size_t>(child_vertices), VertexKind::interior);
-  t.ring_ordered_.assign(static_cast<std::size_t>(child_vertices), 1);
-  t.fan_count_.assign(static_cast<std::size_t>(child_vertices), 1);
+  t.lay_out_vertex_incidence();
 
   std::atomic<bool> walked = true;
   tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
@@ -160,21 +154,7 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
     }
   });
   if (!walked) return std::nullopt;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
-    for (Index v = range.begin(); v != range.end(); ++v) {
-      const Index cv = vertex_point + v;
-      t.vertex_kind_[cv] = p.vertex_kind_[v];
-      if (p.vertex_kind_[v] == VertexKind::isolated) {
-        t.ring_ordered_[cv] = 0;
-        t.fan_count_[cv] = 0;
-        continue;
-      }
-      Index* corners = t.vertex_corners_.data() + t.vertex_corner_offsets_[cv];
-      Index* edges = t.vertex_edges_.data() + t.vertex_edge_offsets_[cv];
-      for (const Index c : p.vertex_corners(v)) *corners++ = 12 * (c / 3) + 3 * (c % 3);
-      for (const Index e : p.vertex_edges(v)) *edges++ = half(e, v);
-    }
-  });
+  t.inherit_vertex_points(p, vertex_point, [](Index c) { return 12 * (c / 3) + 3 * (c % 3); }, half);
   t.build_boundary_loops();
   return t;
 }

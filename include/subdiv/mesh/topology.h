@@ -125,6 +125,12 @@ class MeshTopology {
   void classify_and_order_vertices();
   bool order_ring(Index v, std::vector<Index>& ring_corners, std::vector<Index>& ring_edges);
   void build_boundary_loops();
+  // Shared by the derived constructions (topology_derived.h): turn per-vertex
+  // incidence counts into offsets and storage with manifold defaults; copy
+  // each vertex point's ring from its parent vertex.
+  void lay_out_vertex_incidence();
+  template <typename ChildCorner, typename Half>
+  void inherit_vertex_points(const MeshTopology& parent, Index vertex_point, ChildCorner child_corner, Half half);
 
   std::vector<Index> face_offsets_;
   std::vector<Index> corner_vertex_;
