@@ -94,9 +94,10 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const
 // own parent's where the split allows it (a manifold level), built from the
 // faces otherwise; `step` refines one level.
 template <typename Step>
-PolygonMesh refine_levels(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options, Step&& step) {
+PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
+                          const RefineOptions& options, Step&& step) {
   PolygonMesh current = mesh;
-  std::optional<MeshTopology> topology;
+  std::optional<MeshTopology> topology = std::move(coarse_topology);
   for (int l = 0; l < options.levels; ++l) {
     if (!topology) topology.emplace(current);
     Level level = step(current, *topology);
@@ -168,12 +169,24 @@ void run_with_threads(int threads, Body&& body) {
 
 }  // namespace
 
-void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
-                     const SourceLines* lines) {
+namespace {
+
+// Everything check_refinable() promises, returning the coarse mesh's
+// topology so that refinement does not build it a second time.
+MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                              const SourceLines* lines) {
   if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
   if (boundary_of(mesh, options) == BoundaryInterpolation::none)
     throw InvalidInputError("boundary interpolation 'none' is not supported; use edge-only or edge-and-corner");
-  ValidationReport report = validate(mesh, lines);
+  const std::string path = lines ? lines->path : std::string();
+  try {
+    check_face_arrays(mesh);
+  } catch (const InvalidInputError&) {
+    require_valid(validate(mesh, lines), path);  // names the bad index and its line
+    throw;
+  }
+  MeshTopology topology(mesh);
+  ValidationReport report = validate(mesh, topology, lines);
   if (options.allow_non_manifold) {
     // Those three become sharp features; everything else still stops us.
     for (const IssueKind k : {IssueKind::non_manifold_edge, IssueKind::non_manifold_vertex,
@@ -185,15 +198,13 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
     });
   }
   if (!report.ok()) {
-    const std::string path = lines ? lines->path : std::string();
     const bool fixable = report.count(IssueKind::non_manifold_edge) + report.count(IssueKind::non_manifold_vertex) +
                              report.count(IssueKind::inconsistent_orientation) ==
                          report.error_count();
-    ValidationReport copy = report;
-    if (fixable) {
-      for (auto& issue : copy.issues) issue.message += " (allowing non-manifold input, subdiv refine --allow-non-manifold, makes it sharp)";
-    }
-    require_valid(copy, path);
+    if (fixable)
+      for (auto& issue : report.issues)
+        issue.message += " (allowing non-manifold input, subdiv refine --allow-non-manifold, makes it sharp)";
+    require_valid(report, path);
   }
   if (scheme.needs_triangles)
     for (Index f = 0; f < mesh.face_count(); ++f)
@@ -204,14 +215,23 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
                                 std::to_string(f) + " has " + std::to_string(mesh.face_size(f)) +
                                 " vertices (triangulate it first, e.g. with --triangulate)");
       }
+  return topology;
 }
 
-PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
-  check_refinable(mesh, scheme, options);
+}  // namespace
+
+void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                     const SourceLines* lines) {
+  checked_topology(mesh, scheme, options, lines);
+}
+
+PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                   const SourceLines* lines) {
+  MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   PolygonMesh result;
   run_with_threads(options.threads, [&] {
-    result = refine_levels(mesh, scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
+    result = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
       return refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& level) {
         evaluate_fast(parent, scheme, view, level);
       });
@@ -222,11 +242,11 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
 
 std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                                           PolygonMesh* final_level) {
-  check_refinable(mesh, scheme, options);
+  MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   std::vector<StencilTable> tables;
   run_with_threads(options.threads, [&] {
-    PolygonMesh last = refine_levels(mesh, scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
+    PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
       Level level = refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
         tables.push_back(record_stencils(parent, scheme, view, lv.map));
       });

@@ -65,7 +65,6 @@ int run_refine(const RefineCommandOptions& opt) {
   options.threads = opt.threads;
   if (opt.boundary == "edge-only") options.boundary = BoundaryInterpolation::edge_only;
   else if (opt.boundary == "edge-and-corner") options.boundary = BoundaryInterpolation::edge_and_corner;
-  check_refinable(file.mesh, *scheme, options, &file.lines);
 
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
@@ -82,7 +81,7 @@ int run_refine(const RefineCommandOptions& opt) {
     if (!opt.quiet && std::chrono::duration<double>(now - start).count() > 1.0)
       std::fprintf(stderr, "subdiv: %s\n", line.c_str());
   };
-  const PolygonMesh result = refine(file.mesh, *scheme, options);
+  const PolygonMesh result = refine(file.mesh, *scheme, options, &file.lines);
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;

@@ -36,8 +36,10 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 
 /// The mesh after options.levels uniform steps: positions and every vertex
 /// channel through the scheme's masks, face-varying channels linearly within
-/// faces, tags propagated. Validates the input first (check_refinable).
-PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {});
+/// faces, tags propagated. Validates the input first (check_refinable), with
+/// `lines` naming the file and lines in its errors.
+PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {},
+                   const SourceLines* lines = nullptr);
 
 /// The same refinement recorded as stencil tables, one per level (level i-1
 /// -> level i). `final_level`, if given, receives the last level's mesh with
