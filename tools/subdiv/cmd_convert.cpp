@@ -2,11 +2,11 @@
 // modified; the output appears complete or not at all.
 
 #include <cstdio>
-#include <filesystem>
 
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "output_checks.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/validation.h"
@@ -25,20 +25,16 @@ struct ConvertOptions {
 };
 
 int run_convert(const ConvertOptions& opt) {
-  format_from_path(opt.output);  // fail on a bad extension before reading
-  std::error_code ec;
-  if (std::filesystem::exists(opt.output, ec) && std::filesystem::equivalent(opt.input, opt.output, ec))
-    throw InvalidInputError(opt.output + ": output is the input file; choose another name (inputs are never modified)");
+  check_output_path(opt.input, opt.output);
   const MeshFile file = read_mesh(opt.input);
   if (opt.validate) require_valid(validate(file.mesh, &file.lines), opt.input);
-  for (const auto& w : file.warnings) std::fprintf(stderr, "subdiv: warning: %s: %s\n", opt.input.c_str(), w.c_str());
+  print_warnings(opt.input, file.warnings);
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii
                       : opt.big_endian ? PlyEncoding::binary_big_endian : PlyEncoding::binary_little_endian;
   wopt.write_tags = !opt.no_tags;
-  for (const auto& w : write_mesh(file.mesh, opt.output, wopt))
-    std::fprintf(stderr, "subdiv: warning: %s: %s\n", opt.output.c_str(), w.c_str());
+  print_warnings(opt.output, write_mesh(file.mesh, opt.output, wopt));
   std::printf("%s", fmt::format("wrote {}: {} vertices, {} faces\n", opt.output, file.mesh.vertex_count(),
                                 file.mesh.face_count()).c_str());
   return kExitOk;

@@ -3,12 +3,12 @@
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <map>
 
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "output_checks.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/triangulate.h"
@@ -41,13 +41,10 @@ std::string scheme_names() {
 int run_refine(const RefineCommandOptions& opt) {
   const Scheme* scheme = find_scheme(opt.scheme);
   if (!scheme) throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + scheme_names() + ")");
-  format_from_path(opt.output);
-  std::error_code ec;
-  if (std::filesystem::exists(opt.output, ec) && std::filesystem::equivalent(opt.input, opt.output, ec))
-    throw InvalidInputError(opt.output + ": output is the input file; choose another name (inputs are never modified)");
+  check_output_path(opt.input, opt.output);
 
   MeshFile file = read_mesh(opt.input);
-  for (const auto& w : file.warnings) std::fprintf(stderr, "subdiv: warning: %s: %s\n", opt.input.c_str(), w.c_str());
+  print_warnings(opt.input, file.warnings);
   if (opt.triangulate && scheme->needs_triangles) {
     file.mesh = triangulate(file.mesh);
     file.lines.face_lines.clear();  // faces and holes were renumbered
@@ -86,8 +83,7 @@ int run_refine(const RefineCommandOptions& opt) {
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
   const auto write_start = clock::now();
-  for (const auto& w : write_mesh(result, opt.output, wopt))
-    std::fprintf(stderr, "subdiv: warning: %s: %s\n", opt.output.c_str(), w.c_str());
+  print_warnings(opt.output, write_mesh(result, opt.output, wopt));
   if (opt.stats) {
     std::printf("scheme %s, %d levels, threads %s\n", std::string(scheme->name).c_str(), opt.levels,
                 opt.threads > 0 ? std::to_string(opt.threads).c_str() : "all");

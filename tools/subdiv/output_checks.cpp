@@ -1,0 +1,22 @@
+#include "output_checks.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "subdiv/core/error.h"
+#include "subdiv/io/mesh_io.h"
+
+namespace subdiv::cli {
+
+void check_output_path(const std::string& input, const std::string& output) {
+  format_from_path(output);  // fail on a bad extension before reading
+  std::error_code ec;
+  if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
+    throw InvalidInputError(output + ": output is the input file; choose another name (inputs are never modified)");
+}
+
+void print_warnings(const std::string& path, const std::vector<std::string>& warnings) {
+  for (const auto& w : warnings) std::fprintf(stderr, "subdiv: warning: %s: %s\n", path.c_str(), w.c_str());
+}
+
+}  // namespace subdiv::cli
