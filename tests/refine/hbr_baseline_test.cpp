@@ -301,12 +301,7 @@ TEST_P(HbrBaseline, RefinementMatchesTheBaseline) {
   }
 }
 
-std::string param_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return name;
-}
+std::string param_name(const ::testing::TestParamInfo<std::string>& info) { return test::shape_test_name(info.param); }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, HbrBaseline, ::testing::ValuesIn(baseline_shapes()), param_name);
 

@@ -398,12 +398,7 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   }
 }
 
-std::string param_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return name;
-}
+std::string param_name(const ::testing::TestParamInfo<std::string>& info) { return test::shape_test_name(info.param); }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, OpenSubdivAgreement, ::testing::ValuesIn(shape_names()), param_name);
 

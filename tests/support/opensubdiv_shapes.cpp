@@ -1,5 +1,7 @@
 #include "support/opensubdiv_shapes.h"
 
+#include <cctype>
+
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/validation.h"
 #include "support/test_meshes.h"
@@ -35,6 +37,13 @@ BoundaryInterpolation harness_boundary(const Tags& tags) {
   if (!tags.boundary_interpolation_set || tags.boundary_interpolation == BoundaryInterpolation::none)
     return BoundaryInterpolation::edge_only;
   return tags.boundary_interpolation;
+}
+
+std::string shape_test_name(const std::string& shape) {
+  std::string name = shape;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
 }
 
 }  // namespace subdiv::test

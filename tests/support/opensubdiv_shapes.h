@@ -25,4 +25,7 @@ std::string rejection(const PolygonMesh& mesh, const Scheme& scheme, const Refin
 /// edge-only.
 BoundaryInterpolation harness_boundary(const Tags& tags);
 
+/// A shape name as a GoogleTest parameter name (letters, digits and '_').
+std::string shape_test_name(const std::string& shape);
+
 }  // namespace subdiv::test
