@@ -8,12 +8,10 @@
 
 namespace subdiv::detail {
 
-namespace {
-
 // Face-varying values: the parent's, then one per parent corner for the edge
 // leaving it (midpoint within the face), then one per face (centroid). Linear
 // within each face, so seams stay where they are.
-void split_face_varying(const MeshTopology& topo, const FaceVaryingChannel& in, FaceVaryingChannel& out) {
+void quad_split_face_varying(const MeshTopology& topo, const FaceVaryingChannel& in, FaceVaryingChannel& out) {
   const auto k = static_cast<std::size_t>(in.components);
   const auto parent_values = static_cast<Index>(in.value_count());
   const Index corners = topo.corner_count(), faces = topo.face_count();
@@ -47,9 +45,7 @@ void split_face_varying(const MeshTopology& topo, const FaceVaryingChannel& in, 
   }
 }
 
-}  // namespace
-
-SplitMap quad_split(const PolygonMesh& parent, const MeshTopology& topo, PolygonMesh& child) {
+SplitMap quad_split(const MeshTopology& topo, PolygonMesh& child) {
   SplitMap map;
   map.rule = SplitRule::quad;
   const Index nf = topo.face_count(), ne = topo.edge_count(), nv = topo.vertex_count(), nc = topo.corner_count();
@@ -78,10 +74,6 @@ SplitMap quad_split(const PolygonMesh& parent, const MeshTopology& topo, Polygon
   });
   child.face_offsets[static_cast<std::size_t>(nc)] = 4 * nc;
 
-  child.vertex_channels.clear();
-  child.face_varying_channels.resize(parent.face_varying_channels.size());
-  for (std::size_t i = 0; i < parent.face_varying_channels.size(); ++i)
-    split_face_varying(topo, parent.face_varying_channels[i], child.face_varying_channels[i]);
   return map;
 }
 

@@ -68,9 +68,16 @@ void require_edges(const MeshTopology& topology) {
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
                         PolygonMesh& child) {
   detail::require_edges(topology);
-  SplitMap map = rule == SplitRule::quad ? detail::quad_split(parent, topology, child)
-                                         : detail::triangle_split(parent, topology, child);
+  SplitMap map = rule == SplitRule::quad ? detail::quad_split(topology, child)
+                                         : detail::triangle_split(topology, child);
   detail::propagate_tags(parent, topology, map, child);
+  // Vertex channels are the masks' to fill; face-varying ones split here.
+  child.vertex_channels.clear();
+  child.face_varying_channels.resize(parent.face_varying_channels.size());
+  const auto split_channel = rule == SplitRule::quad ? detail::quad_split_face_varying
+                                                     : detail::triangle_split_face_varying;
+  for (std::size_t i = 0; i < parent.face_varying_channels.size(); ++i)
+    split_channel(topology, parent.face_varying_channels[i], child.face_varying_channels[i]);
   return map;
 }
 

@@ -8,8 +8,12 @@ namespace subdiv::detail {
 /// Sharpness of a tag one level down: infinite stays, otherwise minus one.
 double child_sharpness(double s);
 
-SplitMap quad_split(const PolygonMesh& parent, const MeshTopology& topology, PolygonMesh& child);
-SplitMap triangle_split(const PolygonMesh& parent, const MeshTopology& topology, PolygonMesh& child);
+SplitMap quad_split(const MeshTopology& topology, PolygonMesh& child);
+SplitMap triangle_split(const MeshTopology& topology, PolygonMesh& child);
+
+/// Face-varying values linear within each face, for the child's corners.
+void quad_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);
+void triangle_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
                     PolygonMesh& child);

@@ -10,11 +10,9 @@
 
 namespace subdiv::detail {
 
-namespace {
-
 // Face-varying values: the parent's, then one per parent corner for the
 // midpoint of the edge leaving it within its face.
-void split_face_varying(const MeshTopology& topo, const FaceVaryingChannel& in, FaceVaryingChannel& out) {
+void triangle_split_face_varying(const MeshTopology& topo, const FaceVaryingChannel& in, FaceVaryingChannel& out) {
   const auto k = static_cast<std::size_t>(in.components);
   const auto p = static_cast<Index>(in.value_count());
   const Index corners = topo.corner_count();
@@ -39,9 +37,7 @@ void split_face_varying(const MeshTopology& topo, const FaceVaryingChannel& in, 
   }
 }
 
-}  // namespace
-
-SplitMap triangle_split(const PolygonMesh& parent, const MeshTopology& topo, PolygonMesh& child) {
+SplitMap triangle_split(const MeshTopology& topo, PolygonMesh& child) {
   for (Index f = 0; f < topo.face_count(); ++f)
     if (topo.face_size(f) != 3)
       throw TopologyError("the triangle split needs a triangle mesh, but face " + std::to_string(f) + " has " +
@@ -76,10 +72,6 @@ SplitMap triangle_split(const PolygonMesh& parent, const MeshTopology& topo, Pol
   });
   child.face_offsets[4 * static_cast<std::size_t>(nf)] = 12 * nf;
 
-  child.vertex_channels.clear();
-  child.face_varying_channels.resize(parent.face_varying_channels.size());
-  for (std::size_t i = 0; i < parent.face_varying_channels.size(); ++i)
-    split_face_varying(topo, parent.face_varying_channels[i], child.face_varying_channels[i]);
   return map;
 }
 
