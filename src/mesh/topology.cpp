@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "../core/large_buffers.h"
 #include "union_find.h"
 
 namespace subdiv {
@@ -23,10 +24,10 @@ MeshTopology::MeshTopology(const PolygonMesh& mesh)
     : face_offsets_(mesh.face_offsets), corner_vertex_(mesh.face_indices) {
   check_face_arrays(mesh);
   const Index nc = corner_count();
-  corner_face_.resize(static_cast<std::size_t>(nc));
+  detail::assign_large(corner_face_, static_cast<std::size_t>(nc));
   for (Index f = 0; f < face_count(); ++f)
     std::fill(corner_face_.begin() + face_offsets_[f], corner_face_.begin() + face_offsets_[f + 1], f);
-  vertex_kind_.assign(static_cast<std::size_t>(mesh.vertex_count()), VertexKind::isolated);
+  detail::assign_large(vertex_kind_, static_cast<std::size_t>(mesh.vertex_count()), VertexKind::isolated);
 
   build_edges();
   build_vertex_incidence();
@@ -40,7 +41,7 @@ MeshTopology::MeshTopology(const PolygonMesh& mesh)
 void MeshTopology::build_edges() {
   const Index nc = corner_count();
   const Index nv = vertex_count();
-  corner_edge_.assign(static_cast<std::size_t>(nc), kInvalidIndex);
+  detail::assign_large(corner_edge_, static_cast<std::size_t>(nc), kInvalidIndex);
 
   std::vector<Index> bucket_offsets(static_cast<std::size_t>(nv) + 1, 0);
   for (Index c = 0; c < nc; ++c) {
@@ -77,9 +78,9 @@ void MeshTopology::build_edges() {
   });
   counts_to_offsets(first_edge);
   const Index ne = first_edge.back();
-  edge_vertices_.resize(static_cast<std::size_t>(ne));
-  edge_corner_offsets_.resize(static_cast<std::size_t>(ne) + 1);
-  edge_corners_.resize(buckets.size());
+  detail::assign_large(edge_vertices_, static_cast<std::size_t>(ne));
+  detail::assign_large(edge_corner_offsets_, static_cast<std::size_t>(ne) + 1);
+  detail::assign_large(edge_corners_, buckets.size());
   tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       auto [first, last] = bucket(v);
@@ -101,22 +102,22 @@ void MeshTopology::build_edges() {
 
 void MeshTopology::build_vertex_incidence() {
   const Index nv = vertex_count();
-  vertex_corner_offsets_.assign(static_cast<std::size_t>(nv) + 1, 0);
+  detail::assign_large(vertex_corner_offsets_, static_cast<std::size_t>(nv) + 1, 0);
   for (Index c = 0; c < corner_count(); ++c) ++vertex_corner_offsets_[corner_vertex_[c] + 1];
   counts_to_offsets(vertex_corner_offsets_);
-  vertex_corners_.resize(corner_vertex_.size());
+  detail::assign_large(vertex_corners_, corner_vertex_.size());
   {
     std::vector<Index> fill(vertex_corner_offsets_.begin(), vertex_corner_offsets_.end() - 1);
     for (Index c = 0; c < corner_count(); ++c) vertex_corners_[fill[corner_vertex_[c]]++] = c;
   }
 
-  vertex_edge_offsets_.assign(static_cast<std::size_t>(nv) + 1, 0);
+  detail::assign_large(vertex_edge_offsets_, static_cast<std::size_t>(nv) + 1, 0);
   for (const auto& ev : edge_vertices_) {
     ++vertex_edge_offsets_[ev[0] + 1];
     ++vertex_edge_offsets_[ev[1] + 1];
   }
   counts_to_offsets(vertex_edge_offsets_);
-  vertex_edges_.resize(2 * edge_vertices_.size());
+  detail::assign_large(vertex_edges_, 2 * edge_vertices_.size());
   std::vector<Index> fill(vertex_edge_offsets_.begin(), vertex_edge_offsets_.end() - 1);
   for (Index e = 0; e < edge_count(); ++e) {
     vertex_edges_[fill[edge_vertices_[e][0]]++] = e;
@@ -160,8 +161,8 @@ Index MeshTopology::local_fan_count(Index v, std::vector<Index>& parent, std::ve
 }
 
 void MeshTopology::classify_and_order_vertices() {
-  ring_ordered_.assign(static_cast<std::size_t>(vertex_count()), 0);
-  fan_count_.assign(static_cast<std::size_t>(vertex_count()), 0);
+  detail::assign_large(ring_ordered_, static_cast<std::size_t>(vertex_count()), 0);
+  detail::assign_large(fan_count_, static_cast<std::size_t>(vertex_count()), 0);
   // Every vertex reads shared arrays and writes only its own entries and
   // incidence slices: a parallel loop gives the same result as a serial one.
   tbb::parallel_for(tbb::blocked_range<Index>(0, vertex_count(), 1024), [this](const tbb::blocked_range<Index>& range) {
@@ -254,11 +255,11 @@ void MeshTopology::lay_out_vertex_incidence() {
   const std::size_t n = vertex_corner_offsets_.size() - 1;
   std::partial_sum(vertex_corner_offsets_.begin(), vertex_corner_offsets_.end(), vertex_corner_offsets_.begin());
   std::partial_sum(vertex_edge_offsets_.begin(), vertex_edge_offsets_.end(), vertex_edge_offsets_.begin());
-  vertex_corners_.resize(static_cast<std::size_t>(vertex_corner_offsets_.back()));
-  vertex_edges_.resize(static_cast<std::size_t>(vertex_edge_offsets_.back()));
-  vertex_kind_.assign(n, VertexKind::interior);
-  ring_ordered_.assign(n, 1);
-  fan_count_.assign(n, 1);
+  detail::assign_large(vertex_corners_, static_cast<std::size_t>(vertex_corner_offsets_.back()));
+  detail::assign_large(vertex_edges_, static_cast<std::size_t>(vertex_edge_offsets_.back()));
+  detail::assign_large(vertex_kind_, n, VertexKind::interior);
+  detail::assign_large(ring_ordered_, n, 1);
+  detail::assign_large(fan_count_, n, 1);
 }
 
 void MeshTopology::build_boundary_loops() {

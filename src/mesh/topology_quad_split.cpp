@@ -11,6 +11,7 @@
 #include <atomic>
 #include <numeric>
 
+#include "../core/large_buffers.h"
 #include "topology_derived.h"
 
 #include <tbb/blocked_range.h>
@@ -32,8 +33,8 @@ std::optional<MeshTopology> MeshTopology::from_quad_split(const MeshTopology& p,
   t.face_offsets_ = child.face_offsets;
   t.corner_vertex_ = child.face_indices;
   const auto child_corners = static_cast<std::size_t>(4) * static_cast<std::size_t>(nc);
-  t.corner_face_.resize(child_corners);
-  t.corner_edge_.resize(child_corners);
+  detail::assign_large(t.corner_face_, child_corners);
+  detail::assign_large(t.corner_edge_, child_corners);
 
   // Interior edge of parent corner c: (F(f), E(e_c)), numbered by the rank of
   // e_c among its face's edges.
@@ -41,9 +42,9 @@ std::optional<MeshTopology> MeshTopology::from_quad_split(const MeshTopology& p,
   const Index halves = nc;  // first half-edge index
   auto half = [&](Index e, Index end) { return halves + 2 * e + (p.edge_vertices_[e][0] == end ? 0 : 1); };
 
-  t.edge_vertices_.resize(static_cast<std::size_t>(nc) + 2 * static_cast<std::size_t>(ne));
-  t.edge_corner_offsets_.resize(t.edge_vertices_.size() + 1);
-  t.edge_corners_.resize(2 * static_cast<std::size_t>(nc) + 2 * p.edge_corners_.size());
+  detail::assign_large(t.edge_vertices_, static_cast<std::size_t>(nc) + 2 * static_cast<std::size_t>(ne));
+  detail::assign_large(t.edge_corner_offsets_, t.edge_vertices_.size() + 1);
+  detail::assign_large(t.edge_corners_, 2 * static_cast<std::size_t>(nc) + 2 * p.edge_corners_.size());
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 2048), [&](const tbb::blocked_range<Index>& range) {
     for (Index f = range.begin(); f != range.end(); ++f) {
       const Index first = p.face_offsets_[f], last = p.face_offsets_[f + 1];
@@ -87,8 +88,8 @@ std::optional<MeshTopology> MeshTopology::from_quad_split(const MeshTopology& p,
 
   // Vertex incidence: face points, edge points, vertex points.
   const Index child_vertices = nf + ne + nv;
-  t.vertex_corner_offsets_.resize(static_cast<std::size_t>(child_vertices) + 1);
-  t.vertex_edge_offsets_.resize(static_cast<std::size_t>(child_vertices) + 1);
+  detail::assign_large(t.vertex_corner_offsets_, static_cast<std::size_t>(child_vertices) + 1);
+  detail::assign_large(t.vertex_edge_offsets_, static_cast<std::size_t>(child_vertices) + 1);
   t.vertex_corner_offsets_[0] = t.vertex_edge_offsets_[0] = 0;
   for (Index f = 0; f < nf; ++f) {
     t.vertex_corner_offsets_[face_point + f + 1] = p.face_size(f);

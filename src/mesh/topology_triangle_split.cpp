@@ -13,6 +13,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "../core/large_buffers.h"
 #include "topology_derived.h"
 
 namespace subdiv {
@@ -61,10 +62,10 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
   t.face_offsets_ = child.face_offsets;
   t.corner_vertex_ = child.face_indices;
   const auto child_corners = static_cast<std::size_t>(12) * static_cast<std::size_t>(nf);
-  t.corner_face_.resize(child_corners);
-  t.corner_edge_.resize(child_corners);
-  t.edge_vertices_.resize(static_cast<std::size_t>(child_edges));
-  t.edge_corner_offsets_.assign(static_cast<std::size_t>(child_edges) + 1, 0);
+  detail::assign_large(t.corner_face_, child_corners);
+  detail::assign_large(t.corner_edge_, child_corners);
+  detail::assign_large(t.edge_vertices_, static_cast<std::size_t>(child_edges));
+  detail::assign_large(t.edge_corner_offsets_, static_cast<std::size_t>(child_edges) + 1, 0);
 
   // Side counts: interior edges have two, halves as many as their parent.
   for (Index e = 0; e < ne; ++e) {
@@ -73,7 +74,7 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
     t.edge_corner_offsets_[first[e + 1]] = p.edge_face_count(e);
   }
   std::partial_sum(t.edge_corner_offsets_.begin(), t.edge_corner_offsets_.end(), t.edge_corner_offsets_.begin());
-  t.edge_corners_.resize(static_cast<std::size_t>(t.edge_corner_offsets_.back()));
+  detail::assign_large(t.edge_corners_, static_cast<std::size_t>(t.edge_corner_offsets_.back()));
 
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 2048), [&](const tbb::blocked_range<Index>& range) {
     for (Index f = range.begin(); f != range.end(); ++f) {
@@ -119,8 +120,8 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
 
   // Vertex incidence: edge points (walked), then vertex points (inherited).
   const Index child_vertices = ne + nv;
-  t.vertex_corner_offsets_.assign(static_cast<std::size_t>(child_vertices) + 1, 0);
-  t.vertex_edge_offsets_.assign(static_cast<std::size_t>(child_vertices) + 1, 0);
+  detail::assign_large(t.vertex_corner_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
+  detail::assign_large(t.vertex_edge_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
   for (Index e = 0; e < ne; ++e) {
     t.vertex_corner_offsets_[e + 1] = 3 * p.edge_face_count(e);
     t.vertex_edge_offsets_[e + 1] = 2 + 2 * p.edge_face_count(e);

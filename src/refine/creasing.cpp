@@ -1,5 +1,7 @@
 #include "subdiv/refine/creasing.h"
 
+#include "../core/large_buffers.h"
+
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
@@ -70,14 +72,14 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
   const auto nv = static_cast<std::size_t>(topo.vertex_count());
   LevelCreasing out;
 
-  out.edge_sharpness.assign(ne, 0.0);
+  detail::assign_large(out.edge_sharpness, ne, 0.0);
   for (const CreaseTag& c : mesh.tags.creases) {
     const Index e = topo.find_edge(c.v0, c.v1);
     if (e != kInvalidIndex) out.edge_sharpness[static_cast<std::size_t>(e)] = std::max(out.edge_sharpness[static_cast<std::size_t>(e)], c.sharpness);
   }
   for (Index e = 0; e < topo.edge_count(); ++e)
     if (topo.edge_face_count(e) != 2 || topo.is_flipped_edge(e)) out.edge_sharpness[static_cast<std::size_t>(e)] = kInfiniteSharpness;
-  out.child_edge_sharpness.resize(ne);
+  detail::assign_large(out.child_edge_sharpness, ne);
   std::transform(out.edge_sharpness.begin(), out.edge_sharpness.end(), out.child_edge_sharpness.begin(),
                  subdivide_sharpness);
 
@@ -86,9 +88,9 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
     if (c.vertex >= 0 && static_cast<std::size_t>(c.vertex) < nv)
       vertex_sharpness[static_cast<std::size_t>(c.vertex)] = std::max(vertex_sharpness[static_cast<std::size_t>(c.vertex)], c.sharpness);
 
-  out.vertex_rule.resize(nv);
-  out.child_vertex_rule.resize(nv);
-  out.parent_rule_weight.assign(nv, 1.0);
+  detail::assign_large(out.vertex_rule, nv);
+  detail::assign_large(out.child_vertex_rule, nv);
+  detail::assign_large(out.parent_rule_weight, nv, 1.0);
   // Every vertex writes only its own entries: a parallel loop.
   tbb::parallel_for(tbb::blocked_range<Index>(0, topo.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& r) {
     for (Index v = r.begin(); v != r.end(); ++v)

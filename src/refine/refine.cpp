@@ -1,8 +1,9 @@
 // The refinement engine: split the topology, then evaluate the scheme's
 // masks for every child vertex, either straight into the child's positions
 // and vertex channels or into a stencil table. Child vertices are computed
-// independently (parallel over ranges), each as a fixed-order sum, so results
-// do not depend on the thread count.
+// independently (parallel over ranges; face points before the rest, since
+// masks may weight them), each as a fixed-order sum, so results do not
+// depend on the thread count.
 
 #include "subdiv/refine/refine.h"
 
@@ -59,18 +60,26 @@ void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap&
   scheme.vertex_point(view, v, rule, mask);
 }
 
-// Runs fn(i, mask) for every child vertex, in parallel.
+// Runs fn(i, mask) for child vertices [begin, end), in parallel.
+template <typename Fn>
+void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Index begin, Index end,
+                         Fn&& fn) {
+  tbb::parallel_for(tbb::blocked_range<Index>(begin, end, 2048), [&](const tbb::blocked_range<Index>& range) {
+    MaskBuilder mask;
+    mask.reserve(64);
+    for (Index i = range.begin(); i != range.end(); ++i) {
+      child_mask(parent, scheme, map, i, mask);
+      fn(i, mask);
+    }
+  });
+}
+
+// The same over every child vertex, face points first: edge and vertex masks
+// may weight the new face points (MaskBuilder), which must exist by then.
 template <typename Fn>
 void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Fn&& fn) {
-  tbb::parallel_for(tbb::blocked_range<Index>(0, map.child_vertex_count, 2048),
-                    [&](const tbb::blocked_range<Index>& range) {
-                      MaskBuilder mask;
-                      mask.reserve(64);
-                      for (Index i = range.begin(); i != range.end(); ++i) {
-                        child_mask(parent, scheme, map, i, mask);
-                        fn(i, mask);
-                      }
-                    });
+  for_each_child_mask(parent, scheme, map, 0, map.edge_points, fn);
+  for_each_child_mask(parent, scheme, map, map.edge_points, map.child_vertex_count, fn);
 }
 
 struct Level {
@@ -110,6 +119,36 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
   return current;
 }
 
+// The mask applied to positions: parent vertices from `parent`, new face
+// points from `child` (already computed).
+Vec3 apply_mask(const MaskBuilder& mask, const SplitMap& map, const Vec3* parent, const Vec3* child) {
+  Vec3 p;
+  const auto vs = mask.vertices();
+  const auto ws = mask.weights();
+  for (std::size_t j = 0; j < vs.size(); ++j) p += ws[j] * parent[vs[j]];
+  const auto fs = mask.face_points();
+  const auto fws = mask.face_point_weights();
+  for (std::size_t j = 0; j < fs.size(); ++j) p += fws[j] * child[map.face_point(fs[j])];
+  return p;
+}
+
+// The same for values of k doubles each, added to out.
+void apply_mask(const MaskBuilder& mask, const SplitMap& map, const double* parent, const double* child,
+                       std::size_t k, double* out) {
+  const auto vs = mask.vertices();
+  const auto ws = mask.weights();
+  for (std::size_t j = 0; j < vs.size(); ++j) {
+    const double* src = parent + static_cast<std::size_t>(vs[j]) * k;
+    for (std::size_t c = 0; c < k; ++c) out[c] += ws[j] * src[c];
+  }
+  const auto fs = mask.face_points();
+  const auto fws = mask.face_point_weights();
+  for (std::size_t j = 0; j < fs.size(); ++j) {
+    const double* src = child + static_cast<std::size_t>(map.face_point(fs[j])) * k;
+    for (std::size_t c = 0; c < k; ++c) out[c] += fws[j] * src[c];
+  }
+}
+
 void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view, Level& level) {
   PolygonMesh& child = level.child;
   child.vertex_channels.resize(parent.vertex_channels.size());
@@ -120,19 +159,12 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const Parent
                                                      static_cast<std::size_t>(in.components))};
   }
   for_each_child_mask(view, scheme, level.map, [&](Index i, const MaskBuilder& mask) {
-    const auto vs = mask.vertices();
-    const auto ws = mask.weights();
-    Vec3 p;
-    for (std::size_t j = 0; j < vs.size(); ++j) p += ws[j] * parent.positions[static_cast<std::size_t>(vs[j])];
-    child.positions[static_cast<std::size_t>(i)] = p;
+    const auto at = static_cast<std::size_t>(i);
+    child.positions[at] = apply_mask(mask, level.map, parent.positions.data(), child.positions.data());
     for (std::size_t ch = 0; ch < parent.vertex_channels.size(); ++ch) {
-      const VertexChannel& in = parent.vertex_channels[ch];
-      const auto k = static_cast<std::size_t>(in.components);
-      double* out = child.vertex_channels[ch].values.data() + static_cast<std::size_t>(i) * k;
-      for (std::size_t j = 0; j < vs.size(); ++j) {
-        const double* src = in.values.data() + static_cast<std::size_t>(vs[j]) * k;
-        for (std::size_t c = 0; c < k; ++c) out[c] += ws[j] * src[c];
-      }
+      const auto k = static_cast<std::size_t>(parent.vertex_channels[ch].components);
+      double* values = child.vertex_channels[ch].values.data();
+      apply_mask(mask, level.map, parent.vertex_channels[ch].values.data(), values, k, values + at * k);
     }
   });
 }
@@ -140,14 +172,22 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const Parent
 StencilTable record_stencils(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view,
                              const SplitMap& map) {
   // Masks are computed in parallel into per-row buffers, then appended in
-  // order; rows keep the masks' entry order so that applying the table
-  // reproduces the fast path bit for bit.
+  // order. A weight on a new face point becomes that face point's row (face
+  // points are recorded first), so the table is over parent vertices only.
   const auto rows = static_cast<std::size_t>(map.child_vertex_count);
   std::vector<std::vector<Index>> vertices(rows);
   std::vector<std::vector<double>> weights(rows);
   for_each_child_mask(view, scheme, map, [&](Index i, const MaskBuilder& mask) {
-    vertices[static_cast<std::size_t>(i)].assign(mask.vertices().begin(), mask.vertices().end());
-    weights[static_cast<std::size_t>(i)].assign(mask.weights().begin(), mask.weights().end());
+    auto& row_vertices = vertices[static_cast<std::size_t>(i)];
+    auto& row_weights = weights[static_cast<std::size_t>(i)];
+    row_vertices.assign(mask.vertices().begin(), mask.vertices().end());
+    row_weights.assign(mask.weights().begin(), mask.weights().end());
+    for (std::size_t j = 0; j < mask.face_points().size(); ++j) {
+      const auto face_row = static_cast<std::size_t>(map.face_point(mask.face_points()[j]));
+      const double w = mask.face_point_weights()[j];
+      row_vertices.insert(row_vertices.end(), vertices[face_row].begin(), vertices[face_row].end());
+      for (const double fw : weights[face_row]) row_weights.push_back(w * fw);
+    }
   });
   StencilTable table(parent.vertex_count());
   std::size_t entries = 0;

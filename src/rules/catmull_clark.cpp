@@ -7,6 +7,8 @@
 //   edge point   (v0 + v1 + f0 + f1) / 4, with f0, f1 the new face points;
 //   vertex point ((k-2)/k) v + (1/k^2) sum v_i + (1/k^2) sum f_i
 //                (k = valence; v_i ring neighbours; f_i new face points).
+// The masks weight the new face points themselves (MaskBuilder), as these
+// formulas are written, rather than re-averaging each face's vertices.
 // For quads this is the survey's beta = 3/(2k), gamma = 1/(4k) form, and for
 // k = 4 the bicubic B-spline rules.
 // Sharp and boundary edges use the cubic B-spline curve rules: edge midpoint,
@@ -30,7 +32,7 @@ void edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBuilder& mas
   const auto [a, b] = level.topology.edge_vertices(e);
   mask.add(a, 0.25);
   mask.add(b, 0.25);
-  for (const Index c : sides) detail::add_face_average(level, level.topology.corner_face(c), 0.25, mask);
+  for (const Index c : sides) mask.add_face_point(level.topology.corner_face(c), 0.25);
 }
 
 void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder& mask) {
@@ -40,7 +42,7 @@ void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder&
   const double k2 = k * k;
   mask.add(v, (k - 2.0) / k);
   for (const Index e : t.vertex_edges(v)) mask.add(t.other_vertex(e, v), 1.0 / k2);
-  for (const Index c : t.vertex_corners(v)) detail::add_face_average(level, t.corner_face(c), 1.0 / k2, mask);
+  for (const Index c : t.vertex_corners(v)) mask.add_face_point(t.corner_face(c), 1.0 / k2);
 }
 
 }  // namespace

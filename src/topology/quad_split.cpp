@@ -4,6 +4,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "../core/large_buffers.h"
 #include "split_detail.h"
 
 namespace subdiv::detail {
@@ -54,10 +55,9 @@ SplitMap quad_split(const MeshTopology& topo, PolygonMesh& child) {
   map.vertex_points = nf + ne;
   map.child_vertex_count = nf + ne + nv;
 
-  child.positions.assign(static_cast<std::size_t>(map.child_vertex_count), Vec3{});
-  child.face_offsets.resize(static_cast<std::size_t>(nc) + 1);
-  child.face_indices.resize(4 * static_cast<std::size_t>(nc));
-  map.child_face_parent.resize(static_cast<std::size_t>(nc));
+  detail::assign_large(child.positions, static_cast<std::size_t>(map.child_vertex_count), Vec3{});
+  detail::assign_large(child.face_offsets, static_cast<std::size_t>(nc) + 1);
+  detail::assign_large(child.face_indices, 4 * static_cast<std::size_t>(nc));
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     for (Index f = range.begin(); f != range.end(); ++f) {
       const Index first = topo.face_first_corner(f), n = topo.face_size(f);
@@ -68,7 +68,6 @@ SplitMap quad_split(const MeshTopology& topo, PolygonMesh& child) {
         q[2] = map.face_point(f);
         q[3] = map.edge_point(topo.corner_edge(topo.corner_prev(c)));
         child.face_offsets[static_cast<std::size_t>(c)] = 4 * c;
-        map.child_face_parent[static_cast<std::size_t>(c)] = f;
       }
     }
   });

@@ -2,10 +2,17 @@
 
 #include "subdiv/topology/split.h"
 
+#include <algorithm>
+
 #include "split_detail.h"
 #include "subdiv/core/error.h"
 
 namespace subdiv {
+
+std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f) {
+  if (rule == SplitRule::quad) return {parent.face_first_corner(f), parent.face_first_corner(f) + parent.face_size(f)};
+  return {4 * f, 4 * f + 4};
+}
 
 const char* to_string(SplitRule r) { return r == SplitRule::quad ? "quad split (QP, arity 2)" : "triangle split (TP, arity 2)"; }
 
@@ -48,11 +55,15 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
     out.corners.push_back(t);
   }
   if (!in.holes.empty()) {
-    std::vector<char> is_hole(static_cast<std::size_t>(parent.face_count()), 0);
-    for (const Index f : in.holes)
-      if (f >= 0 && f < parent.face_count()) is_hole[static_cast<std::size_t>(f)] = 1;
-    for (Index cf = 0; cf < child.face_count(); ++cf)
-      if (is_hole[static_cast<std::size_t>(map.child_face_parent[static_cast<std::size_t>(cf)])]) out.holes.push_back(cf);
+    // Child faces of increasing parents increase: sorted parents give sorted holes.
+    std::vector<Index> holes = in.holes;
+    std::sort(holes.begin(), holes.end());
+    holes.erase(std::unique(holes.begin(), holes.end()), holes.end());
+    for (const Index f : holes) {
+      if (f < 0 || f >= parent.face_count()) continue;
+      const auto [first, last] = child_faces(topology, map.rule, f);
+      for (Index cf = first; cf < last; ++cf) out.holes.push_back(cf);
+    }
   }
 }
 

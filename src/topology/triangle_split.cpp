@@ -5,6 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "../core/large_buffers.h"
 #include "split_detail.h"
 #include "subdiv/core/error.h"
 
@@ -49,10 +50,9 @@ SplitMap triangle_split(const MeshTopology& topo, PolygonMesh& child) {
   map.vertex_points = ne;
   map.child_vertex_count = ne + nv;
 
-  child.positions.assign(static_cast<std::size_t>(map.child_vertex_count), Vec3{});
-  child.face_offsets.resize(4 * static_cast<std::size_t>(nf) + 1);
-  child.face_indices.resize(12 * static_cast<std::size_t>(nf));
-  map.child_face_parent.resize(4 * static_cast<std::size_t>(nf));
+  detail::assign_large(child.positions, static_cast<std::size_t>(map.child_vertex_count), Vec3{});
+  detail::assign_large(child.face_offsets, 4 * static_cast<std::size_t>(nf) + 1);
+  detail::assign_large(child.face_indices, 12 * static_cast<std::size_t>(nf));
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     for (Index f = range.begin(); f != range.end(); ++f) {
       const Index c0 = topo.face_first_corner(f);  // faces are triangles: corners 3f .. 3f+2
@@ -66,7 +66,6 @@ SplitMap triangle_split(const MeshTopology& topo, PolygonMesh& child) {
       std::copy(t, t + 12, child.face_indices.begin() + 12 * static_cast<std::ptrdiff_t>(f));
       for (Index i = 0; i < 4; ++i) {
         child.face_offsets[static_cast<std::size_t>(4 * f + i)] = 3 * (4 * f + i);
-        map.child_face_parent[static_cast<std::size_t>(4 * f + i)] = f;
       }
     }
   });

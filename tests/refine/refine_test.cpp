@@ -79,8 +79,13 @@ TEST(Refine, StencilPathReproducesTheFastPath) {
       PolygonMesh via_tables;
       const auto tables = refine_stencils(mesh, *s, o, &via_tables);
       ASSERT_EQ(tables.size(), 3u);
-      // Level by level the tables hold the masks' entries in order: bit-identical.
-      EXPECT_EQ(via_tables.positions, fast.positions) << s->name << " " << name;
+      // Level by level the tables hold the same masks; where a mask weights a
+      // new face point (Catmull-Clark), the table holds that face point's
+      // weights instead, so the two agree to rounding, not bit for bit.
+      ASSERT_EQ(via_tables.positions.size(), fast.positions.size());
+      for (std::size_t i = 0; i < fast.positions.size(); ++i)
+        ASSERT_LT(norm(via_tables.positions[i] - fast.positions[i]), 1e-14 * scale_of(mesh))
+            << s->name << " " << name << " " << i;
       EXPECT_EQ(via_tables.face_indices, fast.face_indices);
       // Composed into one coarse -> level-3 table: the same up to rounding.
       const StencilTable total = compose(tables);

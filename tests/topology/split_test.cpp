@@ -42,7 +42,7 @@ TEST(QuadSplit, CountsNumberingAndValidity) {
   EXPECT_EQ(q[1], s.map.edge_point(t.find_edge(0, 3)));
   EXPECT_EQ(q[2], s.map.face_point(0));
   EXPECT_EQ(q[3], s.map.edge_point(t.find_edge(1, 0)));
-  EXPECT_EQ(s.map.child_face_parent[5], 1);
+  EXPECT_EQ(child_faces(t, SplitRule::quad, 1), std::make_pair(Index{4}, Index{8}));  // face 1 is corners 4-7
 }
 
 TEST(QuadSplit, PolygonsBecomeQuadsAndBoundariesStay) {

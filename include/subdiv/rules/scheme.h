@@ -1,7 +1,8 @@
 #pragma once
 // A subdivision scheme as a runtime value: its refinement rule and its masks.
 // A mask is a function from a local neighbourhood of the parent level to
-// weights over parent vertices; masks never read or write positions. The same
+// weights over parent vertices (and, in quad splits, the level's new face
+// points: see MaskBuilder); masks never read or write positions. The same
 // masks feed the fast path (positions written directly) and recorded stencil
 // tables, so refinement and analysis share one code path.
 
@@ -45,29 +46,49 @@ struct LevelView {
 /// Collects (parent vertex, weight) pairs for one child vertex. Weights added
 /// are multiplied by the current scale, so that the engine can blend the
 /// masks of two rules (semi-sharp creases).
+///
+/// Quad-split schemes may also weight the level's new face points (the child
+/// vertex of a parent face, made by the scheme's face mask), as OpenSubdiv's
+/// Sdc masks weight face centres: a Catmull-Clark vertex mask then has 9
+/// entries instead of 21. The fast path reads those face points from the
+/// child level it has just computed; the stencil recorder substitutes their
+/// face masks, so recorded tables are over parent vertices only.
 class MaskBuilder {
  public:
   void clear() {
     vertices_.clear();
     weights_.clear();
+    face_points_.clear();
+    face_point_weights_.clear();
     scale_ = 1.0;
   }
   void add(Index vertex, double weight) {
     vertices_.push_back(vertex);
     weights_.push_back(scale_ * weight);
   }
+  /// Weight on the new face point of parent face `face` (quad split only).
+  void add_face_point(Index face, double weight) {
+    face_points_.push_back(face);
+    face_point_weights_.push_back(scale_ * weight);
+  }
   void set_scale(double scale) { scale_ = scale; }
   void reserve(std::size_t entries) {
     vertices_.reserve(entries);
     weights_.reserve(entries);
+    face_points_.reserve(entries);
+    face_point_weights_.reserve(entries);
   }
   std::span<const Index> vertices() const { return vertices_; }
   std::span<const double> weights() const { return weights_; }
-  std::size_t size() const { return vertices_.size(); }
+  std::span<const Index> face_points() const { return face_points_; }
+  std::span<const double> face_point_weights() const { return face_point_weights_; }
+  std::size_t size() const { return vertices_.size() + face_points_.size(); }
 
  private:
   std::vector<Index> vertices_;
   std::vector<double> weights_;
+  std::vector<Index> face_points_;
+  std::vector<double> face_point_weights_;
   double scale_ = 1.0;
 };
 

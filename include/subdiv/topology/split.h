@@ -29,8 +29,6 @@ struct SplitMap {
   Index edge_points = 0;    ///< first child vertex made from a parent edge
   Index vertex_points = 0;  ///< first child vertex made from a parent vertex
   Index child_vertex_count = 0;
-  /// Parent face of each child face.
-  std::vector<Index> child_face_parent;
 
   Index face_point(Index f) const { return face_points + f; }
   Index edge_point(Index e) const { return edge_points + e; }
@@ -43,6 +41,10 @@ struct SplitMap {
 /// the child vertex count and zero-filled; vertex channels are not created.
 /// Requires every face corner to have an edge (no degenerate faces) and, for
 /// the triangle split, triangles only; throws TopologyError otherwise.
+/// The child faces of parent face f, [first, last): the quad split makes one
+/// per corner (child face = parent corner), the triangle split 4f .. 4f+3.
+std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f);
+
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
                         PolygonMesh& child);
 

@@ -1,0 +1,45 @@
+#pragma once
+// Sizing the big per-level arrays. A refined level is hundreds of megabytes
+// written once right after allocation, and with 4 KiB pages the kernel's
+// page-fault handling costs more than the refinement arithmetic (400 MB:
+// 250 ms touched with 4 KiB pages, 67 ms with transparent huge pages, on the
+// development VM). So large vectors ask for huge pages before their first
+// touch. Where the kernel offers none (or on other systems) this is a plain
+// assign.
+
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace subdiv::detail {
+
+inline constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+/// Marks the whole 2 MiB pages inside [data, data + bytes) for transparent
+/// huge pages. Only a hint: failures are ignored.
+inline void advise_huge_pages([[maybe_unused]] void* data, [[maybe_unused]] std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const auto begin = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
+  const std::uintptr_t last = (begin + bytes) & ~(kHugePage - 1);
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#endif
+}
+
+/// v = n copies of value, with huge pages for large new allocations.
+template <typename T>
+void assign_large(std::vector<T>& v, std::size_t n, const std::type_identity_t<T>& value = T{}) {
+  if (n * sizeof(T) >= 2 * kHugePage && v.capacity() < n) {
+    std::vector<T>().swap(v);  // nothing to keep: allocate fresh, untouched memory
+    v.reserve(n);
+    advise_huge_pages(v.data(), n * sizeof(T));
+  }
+  v.assign(n, value);
+}
+
+}  // namespace subdiv::detail
