@@ -5,10 +5,9 @@
 // interior edges (F(f), E(e_c)), in increasing e_c, and those whose smaller
 // end is E(e) are the two halves (E(e), V(a)), (E(e), V(b)) with a < b.
 // Rings: a face point's runs over its face's corners, a vertex point's
-// follows its parent's ring, an edge point's is walked (valence <= 4).
+// follows its parent's ring, an edge point's is written out (valence <= 4).
 
 #include <algorithm>
-#include <atomic>
 #include <numeric>
 
 #include "../core/large_buffers.h"
@@ -115,27 +114,38 @@ std::optional<MeshTopology> MeshTopology::from_quad_split(const MeshTopology& p,
       }
     }
   });
-  std::atomic<bool> walked = true;
+  // An edge point's ring, written in the order the generic walk
+  // (order_ring) gives: around an interior edge from side s0 (running a -> b)
+  // and side s1, the corners 4 s0 + 1, 4 next(s1) + 3, 4 s1 + 1, 4 next(s0) + 3
+  // with outgoing edges interior(s0), half(a), interior(s1), half(b), rotated
+  // to start at the smallest corner; on a boundary edge, from the corner whose
+  // outgoing edge is the boundary half.
   tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::vector<Index> ring_corners, ring_edges;
     for (Index e = range.begin(); e != range.end(); ++e) {
       const Index v = edge_point + e;
       Index* corners = t.vertex_corners_.data() + t.vertex_corner_offsets_[v];
       Index* edges = t.vertex_edges_.data() + t.vertex_edge_offsets_[v];
-      Index* c_out = corners;
-      for (const Index s : p.edge_corners(e)) {
-        *c_out++ = 4 * s + 1;
-        *c_out++ = 4 * p.corner_next(s) + 3;
-        *edges++ = interior[s];
+      const auto sides = p.edge_corners(e);
+      const Index s0 = sides[0], n0 = p.corner_next(s0);
+      const Index a = p.corner_vertex_[s0], b = p.corner_vertex_[n0];
+      if (sides.size() == 1) {
+        t.vertex_kind_[v] = VertexKind::boundary;
+        const Index ring_corners[2] = {4 * n0 + 3, 4 * s0 + 1};
+        const Index ring_edges[3] = {half(e, b), interior[s0], half(e, a)};
+        std::copy(ring_corners, ring_corners + 2, corners);
+        std::copy(ring_edges, ring_edges + 3, edges);
+        continue;
       }
-      *edges++ = halves + 2 * e;
-      *edges++ = halves + 2 * e + 1;
-      std::sort(corners, c_out);  // the generic walk starts at the smallest corner
-      t.vertex_kind_[v] = p.is_boundary_edge(e) ? VertexKind::boundary : VertexKind::interior;
-      if (!t.order_ring(v, ring_corners, ring_edges)) walked = false;  // cannot happen under the precondition
+      const Index s1 = sides[1], n1 = p.corner_next(s1);
+      const Index ring_corners[4] = {4 * s0 + 1, 4 * n1 + 3, 4 * s1 + 1, 4 * n0 + 3};
+      const Index ring_edges[4] = {interior[s0], half(e, a), interior[s1], half(e, b)};
+      const auto first = std::min_element(ring_corners, ring_corners + 4) - ring_corners;
+      for (std::ptrdiff_t i = 0; i < 4; ++i) {
+        corners[i] = ring_corners[(first + i) % 4];
+        edges[i] = ring_edges[(first + i) % 4];
+      }
     }
   });
-  if (!walked) return std::nullopt;
   t.inherit_vertex_points(p, vertex_point, [](Index c) { return 4 * c; }, half);
   t.build_boundary_loops();
   return t;

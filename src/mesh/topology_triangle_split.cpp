@@ -118,7 +118,7 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
     }
   });
 
-  // Vertex incidence: edge points (walked), then vertex points (inherited).
+  // Vertex incidence: edge points (written out), then vertex points (inherited).
   const Index child_vertices = ne + nv;
   detail::assign_large(t.vertex_corner_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
   detail::assign_large(t.vertex_edge_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
@@ -132,29 +132,43 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
   }
   t.lay_out_vertex_incidence();
 
-  std::atomic<bool> walked = true;
+  // An edge point's ring, written in the order the generic walk
+  // (order_ring) gives. In face f, from side s = corner i (edge e running
+  // a -> b), the corners are 12f + 3(i+1) + 2, 12f + 9 + i, 12f + 3i + 1 with
+  // outgoing edges half(b), interior(e, next edge), interior(e, previous
+  // edge); the other side follows the same way, and the ring is rotated to
+  // start at the smallest corner. A boundary edge point starts at the corner
+  // whose outgoing edge is the boundary half(b) and ends with half(a).
   tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::vector<Index> ring_corners, ring_edges;
     for (Index e = range.begin(); e != range.end(); ++e) {
-      Index* corners = t.vertex_corners_.data() + t.vertex_corner_offsets_[e];
-      Index* c_out = corners;
-      Index* edges = t.vertex_edges_.data() + t.vertex_edge_offsets_[e];
+      Index ring_corners[6], ring_edges[7];
+      Index n = 0;
       for (const Index s : p.edge_corners(e)) {
         const Index f = s / 3, i = s % 3;
-        *c_out++ = 12 * f + 3 * i + 1;
-        *c_out++ = 12 * f + 3 * ((i + 1) % 3) + 2;
-        *c_out++ = 12 * f + 9 + i;
-        *edges++ = interior(e, p.corner_edge_[p.corner_next(s)]);
-        *edges++ = interior(e, p.corner_edge_[p.corner_prev(s)]);
+        ring_corners[n] = 12 * f + 3 * ((i + 1) % 3) + 2;
+        ring_corners[n + 1] = 12 * f + 9 + i;
+        ring_corners[n + 2] = 12 * f + 3 * i + 1;
+        ring_edges[n] = half(e, p.corner_vertex_[p.corner_next(s)]);
+        ring_edges[n + 1] = interior(e, p.corner_edge_[p.corner_next(s)]);
+        ring_edges[n + 2] = interior(e, p.corner_edge_[p.corner_prev(s)]);
+        n += 3;
       }
-      *edges++ = first[e + 1] - 2;
-      *edges++ = first[e + 1] - 1;
-      std::sort(corners, c_out);  // the generic walk starts at the smallest corner
-      t.vertex_kind_[e] = p.is_boundary_edge(e) ? VertexKind::boundary : VertexKind::interior;
-      if (!t.order_ring(e, ring_corners, ring_edges)) walked = false;
+      Index* corners = t.vertex_corners_.data() + t.vertex_corner_offsets_[e];
+      Index* edges = t.vertex_edges_.data() + t.vertex_edge_offsets_[e];
+      if (n == 3) {
+        t.vertex_kind_[e] = VertexKind::boundary;
+        ring_edges[3] = half(e, p.corner_vertex_[p.edge_corners(e)[0]]);
+        std::copy(ring_corners, ring_corners + 3, corners);
+        std::copy(ring_edges, ring_edges + 4, edges);
+        continue;
+      }
+      const auto first_corner = std::min_element(ring_corners, ring_corners + 6) - ring_corners;
+      for (std::ptrdiff_t k = 0; k < 6; ++k) {
+        corners[k] = ring_corners[(first_corner + k) % 6];
+        edges[k] = ring_edges[(first_corner + k) % 6];
+      }
     }
   });
-  if (!walked) return std::nullopt;
   t.inherit_vertex_points(p, vertex_point, [](Index c) { return 12 * (c / 3) + 3 * (c % 3); }, half);
   t.build_boundary_loops();
   return t;
