@@ -41,24 +41,26 @@ void BM_Refine_Loop(benchmark::State& state) {
 // 1M triangles to level 2 (16M triangles).
 BENCHMARK(BM_Refine_Loop)->Args({708, 2, 1})->Args({708, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Stencil path: build the table once (coarse -> level 2), then re-apply it to
-// new positions, as for animation.
+// Stencil path: build the table once (coarse -> level 2; arguments: mesh
+// size, levels, threads), then re-apply it to new positions, as for animation.
 void BM_StencilBuild_CatmullClark(benchmark::State& state) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
   RefineOptions options;
   options.levels = static_cast<int>(state.range(1));
+  const int threads = static_cast<int>(state.range(2));
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   for (auto _ : state) {
-    const StencilTable table = compose(refine_stencils(mesh, *find_scheme("catmull-clark"), options));
+    const StencilTable table = refine_stencil_table(mesh, *find_scheme("catmull-clark"), options);
     benchmark::DoNotOptimize(table.entry_count());
   }
 }
-BENCHMARK(BM_StencilBuild_CatmullClark)->Args({158, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_StencilBuild_CatmullClark)->Args({158, 2, 1})->Args({158, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_StencilApply_CatmullClark(benchmark::State& state) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
   RefineOptions options;
   options.levels = static_cast<int>(state.range(1));
-  const StencilTable table = compose(refine_stencils(mesh, *find_scheme("catmull-clark"), options));
+  const StencilTable table = refine_stencil_table(mesh, *find_scheme("catmull-clark"), options);
   std::vector<Vec3> out(static_cast<std::size_t>(table.row_count()));
   for (auto _ : state) {
     table.apply(mesh.positions, out);

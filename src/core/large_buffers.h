@@ -31,6 +31,18 @@ inline void advise_huge_pages([[maybe_unused]] void* data, [[maybe_unused]] std:
 #endif
 }
 
+/// v.reserve(n), with huge pages for a large new allocation.
+template <typename T>
+void reserve_large(std::vector<T>& v, std::size_t n) {
+  if (n <= v.capacity()) return;
+  if (n * sizeof(T) < 2 * kHugePage) return v.reserve(n);
+  std::vector<T> bigger;
+  bigger.reserve(n);
+  advise_huge_pages(bigger.data(), n * sizeof(T));
+  bigger.insert(bigger.end(), v.begin(), v.end());
+  v.swap(bigger);
+}
+
 /// v = n copies of value, with huge pages for large new allocations.
 template <typename T>
 void assign_large(std::vector<T>& v, std::size_t n, const std::type_identity_t<T>& value = T{}) {

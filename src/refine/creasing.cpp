@@ -77,11 +77,14 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
     const Index e = topo.find_edge(c.v0, c.v1);
     if (e != kInvalidIndex) out.edge_sharpness[static_cast<std::size_t>(e)] = std::max(out.edge_sharpness[static_cast<std::size_t>(e)], c.sharpness);
   }
-  for (Index e = 0; e < topo.edge_count(); ++e)
-    if (topo.edge_face_count(e) != 2 || topo.is_flipped_edge(e)) out.edge_sharpness[static_cast<std::size_t>(e)] = kInfiniteSharpness;
   detail::assign_large(out.child_edge_sharpness, ne);
-  std::transform(out.edge_sharpness.begin(), out.edge_sharpness.end(), out.child_edge_sharpness.begin(),
-                 subdivide_sharpness);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, topo.edge_count(), 8192), [&](const tbb::blocked_range<Index>& r) {
+    for (Index e = r.begin(); e != r.end(); ++e) {
+      double& s = out.edge_sharpness[static_cast<std::size_t>(e)];
+      if (topo.edge_face_count(e) != 2 || topo.is_flipped_edge(e)) s = kInfiniteSharpness;
+      out.child_edge_sharpness[static_cast<std::size_t>(e)] = subdivide_sharpness(s);
+    }
+  });
 
   std::vector<double> vertex_sharpness(nv, 0.0);
   for (const CornerTag& c : mesh.tags.corners)

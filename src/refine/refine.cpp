@@ -9,10 +9,12 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/validation.h"
+#include "row_accumulator.h"
 
 namespace subdiv {
 
@@ -169,31 +171,28 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const Parent
   });
 }
 
-StencilTable record_stencils(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view,
-                             const SplitMap& map) {
-  // Masks are computed in parallel into per-row buffers, then appended in
-  // order. A weight on a new face point becomes that face point's row (face
-  // points are recorded first), so the table is over parent vertices only.
-  const auto rows = static_cast<std::size_t>(map.child_vertex_count);
-  std::vector<std::vector<Index>> vertices(rows);
-  std::vector<std::vector<double>> weights(rows);
-  for_each_child_mask(view, scheme, map, [&](Index i, const MaskBuilder& mask) {
-    auto& row_vertices = vertices[static_cast<std::size_t>(i)];
-    auto& row_weights = weights[static_cast<std::size_t>(i)];
-    row_vertices.assign(mask.vertices().begin(), mask.vertices().end());
-    row_weights.assign(mask.weights().begin(), mask.weights().end());
-    for (std::size_t j = 0; j < mask.face_points().size(); ++j) {
-      const auto face_row = static_cast<std::size_t>(map.face_point(mask.face_points()[j]));
-      const double w = mask.face_point_weights()[j];
-      row_vertices.insert(row_vertices.end(), vertices[face_row].begin(), vertices[face_row].end());
-      for (const double fw : weights[face_row]) row_weights.push_back(w * fw);
+// The stencil rows of one level. Parent vertex p contributes row p of
+// `composed` (coarse -> parent level) when given, else p itself; a new face
+// point contributes its own row, recorded first. Rows come out merged and
+// sorted by source.
+StencilTable record_stencils(const ParentLevel& view, const Scheme& scheme, const SplitMap& map,
+                             const StencilTable* composed) {
+  StencilTable table(composed ? composed->source_count() : view.mesh.vertex_count());
+  tbb::enumerable_thread_specific<MaskBuilder> masks;
+  auto fill = [&](Index i, detail::RowAccumulator& row) {
+    MaskBuilder& mask = masks.local();
+    child_mask(view, scheme, map, i, mask);
+    const auto vs = mask.vertices();
+    const auto ws = mask.weights();
+    for (std::size_t j = 0; j < vs.size(); ++j) {
+      if (composed) row.add_row(*composed, vs[j], ws[j]);
+      else row.add(vs[j], ws[j]);
     }
-  });
-  StencilTable table(parent.vertex_count());
-  std::size_t entries = 0;
-  for (const auto& v : vertices) entries += v.size();
-  table.reserve(rows, entries);
-  for (std::size_t i = 0; i < rows; ++i) table.append_row(vertices[i], weights[i]);
+    for (std::size_t j = 0; j < mask.face_points().size(); ++j)
+      row.add_row(table, map.face_point(mask.face_points()[j]), mask.face_point_weights()[j]);
+  };
+  detail::append_rows(table, 0, map.edge_points, fill);
+  detail::append_rows(table, map.edge_points, map.child_vertex_count, fill);
   return table;
 }
 
@@ -288,7 +287,7 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
   run_with_threads(options.threads, [&] {
     PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
       Level level = refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
-        tables.push_back(record_stencils(parent, scheme, view, lv.map));
+        tables.push_back(record_stencils(view, scheme, lv.map, nullptr));
       });
       if (final_level) tables.back().apply(parent.positions, level.child.positions);
       return level;
@@ -296,6 +295,20 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
     if (final_level) *final_level = std::move(last);
   });
   return tables;
+}
+
+StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
+  MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
+  const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  std::optional<StencilTable> total;
+  run_with_threads(options.threads, [&] {
+    refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
+      return refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
+        total = record_stencils(view, scheme, lv.map, total ? &*total : nullptr);
+      });
+    });
+  });
+  return total ? std::move(*total) : StencilTable::identity(mesh.vertex_count());
 }
 
 StencilTable compose(const std::vector<StencilTable>& levels) {

@@ -1,11 +1,11 @@
 #include "subdiv/refine/stencil_table.h"
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
 #include <string>
 
+#include "../core/large_buffers.h"
+#include "row_accumulator.h"
 #include "subdiv/core/error.h"
 
 namespace subdiv {
@@ -19,80 +19,41 @@ StencilTable StencilTable::identity(Index n) {
 }
 
 void StencilTable::reserve(std::size_t rows, std::size_t entries) {
-  offsets_.reserve(rows + 1);
-  vertices_.reserve(entries);
-  weights_.reserve(entries);
+  detail::reserve_large(offsets_, rows + 1);
+  detail::reserve_large(vertices_, entries);
+  detail::reserve_large(weights_, entries);
 }
 
 void StencilTable::append_row(std::span<const Index> vertices, std::span<const double> weights) {
-  if (vertices.size() != weights.size()) throw InvalidInputError("stencil row: vertex and weight counts differ");
-  for (const Index v : vertices)
-    if (v < 0 || v >= source_count_)
-      throw InvalidInputError("stencil row " + std::to_string(row_count()) + " refers to vertex " + std::to_string(v) +
-                              " outside [0, " + std::to_string(source_count_) + ")");
+  const auto size = static_cast<Index>(vertices.size());
+  append_rows(std::span<const Index>(&size, 1), vertices, weights);
+}
+
+void StencilTable::append_rows(std::span<const Index> sizes, std::span<const Index> vertices,
+                               std::span<const double> weights) {
+  if (vertices.size() != weights.size()) throw InvalidInputError("stencil rows: vertex and weight counts differ");
+  std::size_t total = 0;
+  for (const Index n : sizes) total += static_cast<std::size_t>(n);
+  if (total != vertices.size()) throw InvalidInputError("stencil rows: row sizes do not add up to the entries");
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    if (vertices[i] < 0 || vertices[i] >= source_count_)
+      throw InvalidInputError("stencil row refers to vertex " + std::to_string(vertices[i]) + " outside [0, " +
+                              std::to_string(source_count_) + ")");
   vertices_.insert(vertices_.end(), vertices.begin(), vertices.end());
   weights_.insert(weights_.end(), weights.begin(), weights.end());
-  offsets_.push_back(static_cast<Index>(vertices_.size()));
+  for (const Index n : sizes) offsets_.push_back(offsets_.back() + n);
 }
 
 StencilTable StencilTable::then(const StencilTable& next) const {
   if (next.source_count() != row_count())
     throw InvalidInputError("cannot compose stencil tables: the second has " + std::to_string(next.source_count()) +
                             " sources, the first " + std::to_string(row_count()) + " rows");
-  // Rows are computed in parallel into per-row buffers with a dense
-  // accumulator per block, then concatenated in order: deterministic.
-  const Index rows = next.row_count();
-  std::vector<std::vector<Index>> merged_vertices(static_cast<std::size_t>(rows));
-  std::vector<std::vector<double>> merged_weights(static_cast<std::size_t>(rows));
-  struct Accumulator {
-    std::vector<double> dense;
-    std::vector<char> used;
-    std::vector<Index> touched;
-  };
-  tbb::enumerable_thread_specific<Accumulator> accumulators([this] {
-    return Accumulator{std::vector<double>(static_cast<std::size_t>(source_count_), 0.0),
-                       std::vector<char>(static_cast<std::size_t>(source_count_), 0), {}};
-  });
-  tbb::parallel_for(tbb::blocked_range<Index>(0, rows, 1024), [&](const tbb::blocked_range<Index>& range) {
-    auto& [dense, used, touched] = accumulators.local();
-    for (Index r = range.begin(); r != range.end(); ++r) {
-      touched.clear();
-      const auto mid = next.row_vertices(r);
-      const auto mid_w = next.row_weights(r);
-      for (std::size_t i = 0; i < mid.size(); ++i) {
-        const auto src = row_vertices(mid[i]);
-        const auto src_w = row_weights(mid[i]);
-        for (std::size_t j = 0; j < src.size(); ++j) {
-          const auto s = static_cast<std::size_t>(src[j]);
-          if (!used[s]) {
-            used[s] = 1;
-            touched.push_back(src[j]);
-          }
-          dense[s] += mid_w[i] * src_w[j];
-        }
-      }
-      std::sort(touched.begin(), touched.end());
-      auto& out_v = merged_vertices[static_cast<std::size_t>(r)];
-      auto& out_w = merged_weights[static_cast<std::size_t>(r)];
-      for (const Index s : touched) {
-        out_v.push_back(s);
-        out_w.push_back(dense[static_cast<std::size_t>(s)]);
-        dense[static_cast<std::size_t>(s)] = 0.0;
-        used[static_cast<std::size_t>(s)] = 0;
-      }
-    }
-  });
   StencilTable out(source_count_);
-  std::size_t entries = 0;
-  for (const auto& v : merged_vertices) entries += v.size();
-  out.reserve(static_cast<std::size_t>(rows), entries);
-  for (Index r = 0; r < rows; ++r) {
-    const auto& v = merged_vertices[static_cast<std::size_t>(r)];
-    const auto& w = merged_weights[static_cast<std::size_t>(r)];
-    out.vertices_.insert(out.vertices_.end(), v.begin(), v.end());
-    out.weights_.insert(out.weights_.end(), w.begin(), w.end());
-    out.offsets_.push_back(static_cast<Index>(out.vertices_.size()));
-  }
+  detail::append_rows(out, 0, next.row_count(), [&](Index r, detail::RowAccumulator& acc) {
+    const auto mid = next.row_vertices(r);
+    const auto mid_w = next.row_weights(r);
+    for (std::size_t i = 0; i < mid.size(); ++i) acc.add_row(*this, mid[i], mid_w[i]);
+  });
   return out;
 }
 

@@ -93,6 +93,17 @@ TEST(Refine, StencilPathReproducesTheFastPath) {
       total.apply(mesh.positions, direct);
       for (std::size_t i = 0; i < direct.size(); ++i)
         ASSERT_LT(norm(direct[i] - fast.positions[i]), 1e-13 * scale_of(mesh)) << s->name << " " << name << " " << i;
+      // Built composed level by level: the same rows up to rounding.
+      const StencilTable built = refine_stencil_table(mesh, *s, o);
+      ASSERT_EQ(built.row_count(), total.row_count());
+      ASSERT_EQ(built.source_count(), mesh.vertex_count());
+      for (Index r = 0; r < built.row_count(); ++r) {
+        ASSERT_TRUE(std::equal(built.row_vertices(r).begin(), built.row_vertices(r).end(),
+                               total.row_vertices(r).begin(), total.row_vertices(r).end()))
+            << s->name << " " << name << " row " << r;
+        for (std::size_t j = 0; j < built.row_weights(r).size(); ++j)
+          ASSERT_NEAR(built.row_weights(r)[j], total.row_weights(r)[j], 1e-15) << s->name << " " << name << " row " << r;
+      }
     }
 }
 

@@ -47,6 +47,11 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
 std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme,
                                           const RefineOptions& options = {}, PolygonMesh* final_level = nullptr);
 
+/// The same refinement as one table, coarse -> level options.levels, built
+/// level by level from the composed rows (faster than composing the
+/// per-level tables afterwards; the same up to rounding).
+StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {});
+
 /// Composes per-level tables into one: coarse -> last level.
 StencilTable compose(const std::vector<StencilTable>& levels);
 

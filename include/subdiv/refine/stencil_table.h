@@ -31,7 +31,8 @@ class StencilTable {
 
   /// Appends a row; throws InvalidInputError for a vertex outside the sources.
   void append_row(std::span<const Index> vertices, std::span<const double> weights);
-  /// Appends many rows at once (rows concatenated, with their sizes).
+  /// Appends many rows at once: their entries concatenated, with each row's size.
+  void append_rows(std::span<const Index> sizes, std::span<const Index> vertices, std::span<const double> weights);
   void reserve(std::size_t rows, std::size_t entries);
 
   /// The table that maps this table's sources through `next` (whose sources
