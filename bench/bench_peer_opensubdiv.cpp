@@ -10,31 +10,16 @@
 #include <vector>
 
 #include "bench_meshes.h"
+#include "peer_opensubdiv.h"
 
 namespace subdiv::bench {
 namespace {
 
 using namespace OpenSubdiv;
 
-std::unique_ptr<Far::TopologyRefiner> osd_refiner(const PolygonMesh& mesh, Sdc::SchemeType type,
-                                                  std::vector<int>& sizes) {
-  sizes.resize(static_cast<std::size_t>(mesh.face_count()));
-  for (Index f = 0; f < mesh.face_count(); ++f) sizes[static_cast<std::size_t>(f)] = mesh.face_size(f);
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.vertex_count();
-  desc.numFaces = mesh.face_count();
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = mesh.face_indices.data();
-  Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(type, sdc)));
-}
-
 void build_with_opensubdiv(benchmark::State& state, const PolygonMesh& mesh) {
-  std::vector<int> sizes;
   for (auto _ : state) {
-    auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK, sizes);
+    auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK);
     benchmark::DoNotOptimize(refiner->GetLevel(0).GetNumEdges());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * mesh.face_count());
@@ -64,37 +49,14 @@ BENCHMARK(BM_Peer_OpenSubdiv_BuildTopology_Triangles)->Arg(707)->Unit(benchmark:
 namespace subdiv::bench {
 namespace {
 
-struct OsdVertex {
-  double x, y, z;
-  void Clear(void* = nullptr) { x = y = z = 0.0; }
-  void AddWithWeight(const OsdVertex& v, double w) {
-    x += w * v.x;
-    y += w * v.y;
-    z += w * v.z;
-  }
-};
-
 void osd_refine_bench(benchmark::State& state, const PolygonMesh& mesh, Sdc::SchemeType type) {
   const int levels = static_cast<int>(state.range(1));
-  std::vector<int> sizes;
   int faces = 0;
+  std::vector<OsdVertex> buffer;
   for (auto _ : state) {
-    auto refiner = osd_refiner(mesh, type, sizes);
-    refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
-    std::vector<OsdVertex> buffer(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-      const Vec3 p = mesh.positions[static_cast<std::size_t>(v)];
-      buffer[static_cast<std::size_t>(v)] = {p.x, p.y, p.z};
-    }
-    Far::PrimvarRefiner primvar(*refiner);
-    OsdVertex* src = buffer.data();
-    for (int level = 1; level <= levels; ++level) {
-      OsdVertex* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
-      primvar.Interpolate(level, src, dst);
-      src = dst;
-    }
-    faces = refiner->GetLevel(levels).GetNumFaces();
+    faces = osd_refine_uniform(mesh, type, levels, buffer);
     benchmark::DoNotOptimize(buffer.data());
+    std::vector<OsdVertex>().swap(buffer);  // each iteration allocates afresh, as refine() does
   }
   state.counters["faces_out"] = faces;
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * faces);
@@ -114,9 +76,8 @@ BENCHMARK(BM_Peer_OpenSubdiv_Refine_Loop)->Args({708, 2})->Unit(benchmark::kMill
 void BM_Peer_OpenSubdiv_StencilBuild_CatmullClark(benchmark::State& state) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
   const int levels = static_cast<int>(state.range(1));
-  std::vector<int> sizes;
   for (auto _ : state) {
-    auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK, sizes);
+    auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK);
     refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
     Far::StencilTableFactoryReal<double>::Options options;
     options.generateIntermediateLevels = false;
@@ -130,8 +91,7 @@ BENCHMARK(BM_Peer_OpenSubdiv_StencilBuild_CatmullClark)->Args({158, 2})->Unit(be
 void BM_Peer_OpenSubdiv_StencilApply_CatmullClark(benchmark::State& state) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
   const int levels = static_cast<int>(state.range(1));
-  std::vector<int> sizes;
-  auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK, sizes);
+  auto refiner = osd_refiner(mesh, Sdc::SCHEME_CATMARK);
   refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
   Far::StencilTableFactory::Options options;
   options.generateIntermediateLevels = false;

@@ -3,6 +3,7 @@
 #include "../core/large_buffers.h"
 
 #include <algorithm>
+#include <atomic>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -29,12 +30,13 @@ namespace {
 // The rules of vertex v now and one level down, and the blend weight.
 void classify_vertex(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double vs, LevelCreasing& out) {
   const auto vi = static_cast<std::size_t>(v);
+  // One level down an edge stays sharp when its sharpness exceeds 1.
   int sharp = 0, child_sharp = 0, infinitely_sharp = 0;
   for (const Index e : topo.vertex_edges(v)) {
-    const auto ei = static_cast<std::size_t>(e);
-    sharp += out.edge_sharpness[ei] > 0.0;
-    child_sharp += out.child_edge_sharpness[ei] > 0.0;
-    infinitely_sharp += out.edge_sharpness[ei] >= kInfiniteSharpness;
+    const double s = edge_sharpness_of(out, e);
+    sharp += s > 0.0;
+    child_sharp += s > 1.0;
+    infinitely_sharp += s >= kInfiniteSharpness;
   }
   const VertexKind kind = topo.vertex_kind(v);
   if (kind == VertexKind::isolated) vs = kInfiniteSharpness;
@@ -55,10 +57,10 @@ void classify_vertex(const MeshTopology& topo, BoundaryInterpolation boundary, I
       sum += vs;
     }
     for (const Index e : topo.vertex_edges(v)) {
-      const auto ei = static_cast<std::size_t>(e);
-      if (out.edge_sharpness[ei] > 0.0 && out.child_edge_sharpness[ei] <= 0.0) {
+      const double s = edge_sharpness_of(out, e);
+      if (s > 0.0 && s <= 1.0) {  // sharp now, smooth one level down
         ++transitions;
-        sum += out.edge_sharpness[ei];
+        sum += s;
       }
     }
     out.parent_rule_weight[vi] = transitions > 0 ? std::min(1.0, sum / transitions) : 0.0;
@@ -77,14 +79,15 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
     const Index e = topo.find_edge(c.v0, c.v1);
     if (e != kInvalidIndex) out.edge_sharpness[static_cast<std::size_t>(e)] = std::max(out.edge_sharpness[static_cast<std::size_t>(e)], c.sharpness);
   }
-  detail::assign_large(out.child_edge_sharpness, ne);
+  std::atomic<bool> any_sharp = !mesh.tags.creases.empty();
   tbb::parallel_for(tbb::blocked_range<Index>(0, topo.edge_count(), 8192), [&](const tbb::blocked_range<Index>& r) {
-    for (Index e = r.begin(); e != r.end(); ++e) {
-      double& s = out.edge_sharpness[static_cast<std::size_t>(e)];
-      if (topo.edge_face_count(e) != 2 || topo.is_flipped_edge(e)) s = kInfiniteSharpness;
-      out.child_edge_sharpness[static_cast<std::size_t>(e)] = subdivide_sharpness(s);
-    }
+    for (Index e = r.begin(); e != r.end(); ++e)
+      if (topo.edge_face_count(e) != 2 || topo.is_flipped_edge(e)) {
+        out.edge_sharpness[static_cast<std::size_t>(e)] = kInfiniteSharpness;
+        any_sharp = true;
+      }
   });
+  if (!any_sharp) std::vector<double>().swap(out.edge_sharpness);
 
   std::vector<double> vertex_sharpness(nv, 0.0);
   for (const CornerTag& c : mesh.tags.corners)

@@ -29,8 +29,8 @@ struct ParentLevel {
   const PolygonMesh& mesh;
   const MeshTopology& topology;
   const LevelCreasing& creasing;
-  LevelView view() const { return {mesh, topology, creasing.edge_sharpness}; }
-  LevelView child_view() const { return {mesh, topology, creasing.child_edge_sharpness}; }
+  LevelView view() const { return {mesh, topology, creasing.edge_sharpness, 0.0}; }
+  LevelView child_view() const { return {mesh, topology, creasing.edge_sharpness, 1.0}; }  // one level down
 };
 
 // The mask of child vertex i: a face, edge or vertex point by its range, with
@@ -41,7 +41,7 @@ void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap&
   if (i < map.edge_points) return scheme.face_point(view, i - map.face_points, mask);
   if (i < map.vertex_points) {
     const Index e = i - map.edge_points;
-    const double s = parent.creasing.edge_sharpness[static_cast<std::size_t>(e)];
+    const double s = edge_sharpness_of(parent.creasing, e);
     if (s <= 0.0) return scheme.edge_point(view, e, EdgeRule::smooth, mask);
     if (s >= 1.0) return scheme.edge_point(view, e, EdgeRule::crease, mask);
     mask.set_scale(1.0 - s);

@@ -27,8 +27,9 @@
 namespace subdiv {
 
 struct LevelCreasing {
-  std::vector<double> edge_sharpness;        ///< this level
-  std::vector<double> child_edge_sharpness;  ///< the same edges one level down
+  /// This level's edge sharpness; empty when no edge is sharp (the common
+  /// closed smooth mesh, which then needs no array).
+  std::vector<double> edge_sharpness;
   std::vector<VertexRule> vertex_rule;       ///< from this level's sharpness
   std::vector<VertexRule> child_vertex_rule; ///< from the sharpness one level down
   std::vector<double> parent_rule_weight;    ///< w where the two rules differ, else 1
@@ -36,6 +37,11 @@ struct LevelCreasing {
 
 /// OpenSubdiv's uniform rule for a sharpness one level down.
 double subdivide_sharpness(double s);
+
+/// The sharpness of edge e (0 when the level has no sharp edge).
+inline double edge_sharpness_of(const LevelCreasing& c, Index e) {
+  return c.edge_sharpness.empty() ? 0.0 : c.edge_sharpness[static_cast<std::size_t>(e)];
+}
 
 /// The rule for a vertex of this sharpness whose edges have these sharpnesses.
 VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count);

@@ -32,15 +32,20 @@ enum class EdgeRule : std::uint8_t { smooth, crease };
 
 const char* to_string(VertexRule);
 
-/// What a mask may look at: the parent level and the sharpness of its edges
-/// (> 0 is sharp for the rule being evaluated; boundary and non-manifold
-/// edges are infinitely sharp).
+/// What a mask may look at: the parent level and the sharpness of its edges.
+/// An edge is sharp for the rule being evaluated when its sharpness exceeds
+/// `sharp_above`: 0 for this level's rule, 1 for the rule one level down
+/// (a sharpness s becomes s - 1 there). Boundary and non-manifold edges are
+/// infinitely sharp. An empty sharpness array means no edge is sharp.
 struct LevelView {
   const PolygonMesh& mesh;
   const MeshTopology& topology;
   std::span<const double> edge_sharpness;
+  double sharp_above = 0.0;
 
-  bool is_sharp(Index e) const { return edge_sharpness[static_cast<std::size_t>(e)] > 0.0; }
+  bool is_sharp(Index e) const {
+    return !edge_sharpness.empty() && edge_sharpness[static_cast<std::size_t>(e)] > sharp_above;
+  }
 };
 
 /// Collects (parent vertex, weight) pairs for one child vertex. Weights added
