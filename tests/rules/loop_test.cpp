@@ -4,8 +4,11 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <random>
+#include <utility>
 
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/refine/refine.h"
@@ -92,6 +95,92 @@ TEST(Loop, GoldenWeights) {
   EXPECT_EQ(e.size(), 4u);
   const auto boundary = test::merged_row(table, t.edge_count() + 2);
   EXPECT_EQ(boundary, (std::map<Index, double>{{1, 0.125}, {2, 0.75}, {3, 0.125}}));
+}
+
+// The three-direction box spline with the directions (1, 0), (0, 1) and
+// (1, 1) (the diagonal test::triangle_grid splits along) taken count[d]
+// times each, by the recurrence of C. de Boor, K. Hollig, S. Riemenschneider,
+// "Box Splines", Springer 1993, ch. I: for x = sum t_xi xi over the n vectors,
+//   (n - 2) M(x) = sum_xi t_xi M_{Xi\xi}(x) + (1 - t_xi) M_{Xi\xi}(x - xi),
+// where M_{Xi\xi} = 0 if Xi\xi does not span the plane. Every box is the limit
+// from the direction (2, 1), which is on no break line, so the half-open base
+// cases agree with each other on the break lines, where the dyadic points are.
+double box_spline(std::array<int, 3> count, double x, double y) {
+  static constexpr double dx[3] = {1, 0, 1}, dy[3] = {0, 1, 1};
+  int p = -1, q = -1;  // two directions present: the basis of t
+  for (int d = 2; d >= 0; --d)
+    if (count[d] > 0) q = std::exchange(p, d);
+  if (q < 0) return 0.0;
+  const double det = dx[p] * dy[q] - dy[p] * dx[q];  // +-1: a and b are exact
+  const double a = (x * dy[q] - y * dx[q]) / det, b = (dx[p] * y - dy[p] * x) / det;
+  const int n = count[0] + count[1] + count[2];
+  if (n == 2) {  // the unit square in (a, b), entered along (2, 1)
+    const double za = (2 * dy[q] - dx[q]) / det, zb = (dx[p] - 2 * dy[p]) / det;
+    auto in = [](double s, double z) { return (s > 0 || (s == 0 && z > 0)) && (s < 1 || (s == 1 && z < 0)); };
+    return in(a, za) && in(b, zb) ? 1.0 : 0.0;
+  }
+  double sum = 0;
+  for (int d = 0; d < 3; ++d) {
+    if (count[d] == 0) continue;
+    const double t = d == p ? a : d == q ? b : 0.0;  // summed over the copies of d
+    std::array<int, 3> rest = count;
+    --rest[d];
+    sum += t * box_spline(rest, x, y) + (count[d] - t) * box_spline(rest, x - dx[d], y - dy[d]);
+  }
+  return sum / (n - 2);
+}
+
+// On a regular mesh Loop's scheme is the quartic box spline of the grid's
+// three directions (Loop 1987). After two steps the limit of every vertex far
+// from the boundary (3/(8 beta) = 6 on the vertex and 1 on each of its six
+// neighbours, over their sum: 1/2 and 1/12, beta = 1/16) must be the spline
+// evaluated at the vertex's lattice point.
+TEST(Loop, RegularGridReproducesTheQuarticBoxSpline) {
+  auto m = [](double x, double y) { return box_spline({2, 2, 2}, x + 2, y + 2); };  // centred on 0
+  // The evaluator: its lattice values are the limit mask, its integer shifts
+  // sum to one, it is symmetric.
+  EXPECT_DOUBLE_EQ(m(0, 0), 0.5);
+  for (const auto& [i, j] : {std::pair{1, 0}, {0, 1}, {1, 1}, {-1, 0}, {0, -1}, {-1, -1}})
+    EXPECT_DOUBLE_EQ(m(i, j), 1.0 / 12);
+  EXPECT_EQ(m(1, -1), 0.0);
+  for (const auto& [x, y] : {std::pair{0.3, 0.7}, {0.25, 0.5}, {0.0, 0.75}, {-0.5, 0.125}}) {
+    double sum = 0;
+    for (int j = -3; j <= 3; ++j)
+      for (int i = -3; i <= 3; ++i) sum += m(x - i, y - j);
+    EXPECT_NEAR(sum, 1.0, 1e-14);
+    EXPECT_NEAR(m(x, y), m(-x, -y), 1e-15);
+    EXPECT_NEAR(m(x, y), m(y, x), 1e-15);
+  }
+
+  const int n = 12;
+  PolygonMesh grid = test::triangle_grid(n, n);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> height(-1.0, 1.0);
+  for (Vec3& p : grid.positions) p.z = height(rng);
+  auto spline = [&](double x, double y) {
+    double z = 0;
+    for (const Vec3& c : grid.positions)
+      if (std::fabs(x - c.x) < 3 && std::fabs(y - c.y) < 3) z += c.z * m(x - c.x, y - c.y);
+    return z;
+  };
+  RefineOptions o;
+  o.levels = 2;
+  const PolygonMesh fine = refine(grid, loop_scheme(), o);
+  const MeshTopology t(fine);
+  int checked = 0;
+  for (Index v = 0; v < fine.vertex_count(); ++v) {
+    const Vec3 p = fine.positions[v];
+    if (p.x < 2.9 || p.x > n - 2.9 || p.y < 2.9 || p.y > n - 2.9) continue;  // 3 from the boundary
+    const double x = std::round(4 * p.x) / 4, y = std::round(4 * p.y) / 4;   // linear data stays on the lattice
+    EXPECT_NEAR(p.x, x, 1e-13);
+    EXPECT_NEAR(p.y, y, 1e-13);
+    ASSERT_EQ(t.valence(v), 6);
+    double limit = 6 * p.z;
+    for (const Index e : t.vertex_edges(v)) limit += fine.positions[t.other_vertex(e, v)].z;
+    EXPECT_NEAR(limit / 12, spline(x, y), 1e-12) << "at " << x << ", " << y;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 25 * 25);  // 3 .. 9 in steps of 1/4
 }
 
 }  // namespace
