@@ -24,9 +24,16 @@ MeshTopology::MeshTopology(const PolygonMesh& mesh)
     : face_offsets_(mesh.face_offsets), corner_vertex_(mesh.face_indices) {
   check_face_arrays(mesh);
   const Index nc = corner_count();
-  detail::assign_large(corner_face_, static_cast<std::size_t>(nc));
-  for (Index f = 0; f < face_count(); ++f)
-    std::fill(corner_face_.begin() + face_offsets_[f], corner_face_.begin() + face_offsets_[f + 1], f);
+  const Index first_size = face_count() > 0 ? face_size(0) : 0;
+  bool uniform = first_size == 3 || first_size == 4;
+  for (Index f = 1; f < face_count() && uniform; ++f) uniform = face_size(f) == first_size;
+  if (uniform) {
+    uniform_face_size_ = first_size;
+  } else {
+    detail::assign_large(corner_face_, static_cast<std::size_t>(nc));
+    for (Index f = 0; f < face_count(); ++f)
+      std::fill(corner_face_.begin() + face_offsets_[f], corner_face_.begin() + face_offsets_[f + 1], f);
+  }
   detail::assign_large(vertex_kind_, static_cast<std::size_t>(mesh.vertex_count()), VertexKind::isolated);
 
   build_edges();
@@ -147,7 +154,7 @@ Index MeshTopology::local_fan_count(Index v, std::vector<Index>& parent, std::ve
   seen.clear();
   for (Index i = 0; i < k; ++i) {
     const Index c = corners[static_cast<std::size_t>(i)];
-    if (i > 0 && corner_face_[c] == corner_face_[corners[static_cast<std::size_t>(i - 1)]]) unite(i, i - 1);
+    if (i > 0 && corner_face(c) == corner_face(corners[static_cast<std::size_t>(i - 1)])) unite(i, i - 1);
     for (const Index e : {corner_edge_[c], corner_edge_[corner_prev(c)]}) {
       if (e == kInvalidIndex) continue;
       auto it = std::find_if(seen.begin(), seen.end(), [e](const auto& p) { return p.first == e; });
@@ -177,7 +184,7 @@ void MeshTopology::classify_and_order_vertices() {
         if (is_boundary_edge(e)) on_boundary = true;
       }
       for (std::size_t i = 1; i < corners.size(); ++i)
-        if (corner_face_[corners[i]] == corner_face_[corners[i - 1]]) repeated_face = true;
+        if (corner_face(corners[i]) == corner_face(corners[i - 1])) repeated_face = true;
       const VertexKind manifold_kind = on_boundary ? VertexKind::boundary : VertexKind::interior;
       // A complete ring walk proves a single fan; only when it fails are the
       // fans counted (the common, manifold case stays cheap).

@@ -32,7 +32,7 @@ std::optional<MeshTopology> MeshTopology::from_quad_split(const MeshTopology& p,
   t.face_offsets_ = child.face_offsets;
   t.corner_vertex_ = child.face_indices;
   const auto child_corners = static_cast<std::size_t>(4) * static_cast<std::size_t>(nc);
-  detail::assign_large(t.corner_face_, child_corners);
+  t.uniform_face_size_ = 4;
   detail::assign_large(t.corner_edge_, child_corners);
 
   // Interior edge of parent corner c: (F(f), E(e_c)), numbered by the rank of
@@ -59,7 +59,6 @@ std::optional<MeshTopology> MeshTopology::from_quad_split(const MeshTopology& p,
         const Index sides[2] = {std::min(4 * c + 1, 4 * next + 2), std::max(4 * c + 1, 4 * next + 2)};
         std::copy(sides, sides + 2, t.edge_corners_.begin() + 2 * e);
         const Index v = p.corner_vertex_[c];
-        for (Index k = 0; k < 4; ++k) t.corner_face_[4 * c + k] = c;
         t.corner_edge_[4 * c + 0] = half(p.corner_edge_[c], v);
         t.corner_edge_[4 * c + 1] = e;
         t.corner_edge_[4 * c + 3] = half(p.corner_edge_[prev], v);

@@ -62,7 +62,7 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
   t.face_offsets_ = child.face_offsets;
   t.corner_vertex_ = child.face_indices;
   const auto child_corners = static_cast<std::size_t>(12) * static_cast<std::size_t>(nf);
-  detail::assign_large(t.corner_face_, child_corners);
+  t.uniform_face_size_ = 3;
   detail::assign_large(t.corner_edge_, child_corners);
   detail::assign_large(t.edge_vertices_, static_cast<std::size_t>(child_edges));
   detail::assign_large(t.edge_corner_offsets_, static_cast<std::size_t>(child_edges) + 1, 0);
@@ -83,7 +83,6 @@ std::optional<MeshTopology> MeshTopology::from_triangle_split(const MeshTopology
         v[i] = p.corner_vertex_[3 * f + i];
         e[i] = p.corner_edge_[3 * f + i];
       }
-      for (Index k = 0; k < 12; ++k) t.corner_face_[12 * f + k] = 4 * f + k / 3;
       for (Index i = 0; i < 3; ++i) {
         const Index prev = (i + 2) % 3;
         Index* c = t.corner_edge_.data() + 12 * f + 3 * i;

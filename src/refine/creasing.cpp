@@ -27,44 +27,61 @@ VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) {
 
 namespace {
 
-// The rules of vertex v now and one level down, and the blend weight.
-void classify_vertex(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double vs, LevelCreasing& out) {
-  const auto vi = static_cast<std::size_t>(v);
-  // One level down an edge stays sharp when its sharpness exceeds 1.
-  int sharp = 0, child_sharp = 0, infinitely_sharp = 0;
+// The sharpness vertex v's rule sees: its tag, or infinite where the vertex
+// cannot be smooth (isolated; a non-manifold vertex that is not a crease; a
+// one-face boundary vertex in edge-and-corner mode).
+double effective_vertex_sharpness(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double tagged,
+                                  const LevelCreasing& out) {
+  const VertexKind kind = topo.vertex_kind(v);
+  if (kind == VertexKind::isolated) return kInfiniteSharpness;
+  if (!topo.ring_ordered(v)) {
+    int infinitely_sharp = 0;
+    for (const Index e : topo.vertex_edges(v)) infinitely_sharp += edge_sharpness_of(out, e) >= kInfiniteSharpness;
+    if (infinitely_sharp != 2) return kInfiniteSharpness;
+  }
+  if (boundary == BoundaryInterpolation::edge_and_corner && kind == VertexKind::boundary &&
+      topo.vertex_face_count(v) == 1)
+    return kInfiniteSharpness;
+  return tagged;
+}
+
+// The rules of vertex v now and one level down; true when they differ. One
+// level down an edge stays sharp when its sharpness exceeds 1.
+bool classify_vertex(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double tagged,
+                     LevelCreasing& out) {
+  int sharp = 0, child_sharp = 0;
   for (const Index e : topo.vertex_edges(v)) {
     const double s = edge_sharpness_of(out, e);
     sharp += s > 0.0;
     child_sharp += s > 1.0;
-    infinitely_sharp += s >= kInfiniteSharpness;
   }
-  const VertexKind kind = topo.vertex_kind(v);
-  if (kind == VertexKind::isolated) vs = kInfiniteSharpness;
-  if (kind != VertexKind::isolated && !topo.ring_ordered(v) && infinitely_sharp != 2) vs = kInfiniteSharpness;
-  if (boundary == BoundaryInterpolation::edge_and_corner && kind == VertexKind::boundary &&
-      topo.vertex_face_count(v) == 1)
-    vs = kInfiniteSharpness;
-
-  const double child_vs = subdivide_sharpness(vs);
+  const double vs = effective_vertex_sharpness(topo, boundary, v, tagged, out);
+  const auto vi = static_cast<std::size_t>(v);
   out.vertex_rule[vi] = vertex_rule_for(vs, sharp);
-  out.child_vertex_rule[vi] = vertex_rule_for(child_vs, child_sharp);
-  if (out.vertex_rule[vi] != out.child_vertex_rule[vi]) {
-    // Sdc::Crease::ComputeFractionalWeightAtVertex.
-    int transitions = 0;
-    double sum = 0.0;
-    if (vs > 0.0 && child_vs <= 0.0) {
-      ++transitions;
-      sum += vs;
-    }
-    for (const Index e : topo.vertex_edges(v)) {
-      const double s = edge_sharpness_of(out, e);
-      if (s > 0.0 && s <= 1.0) {  // sharp now, smooth one level down
-        ++transitions;
-        sum += s;
-      }
-    }
-    out.parent_rule_weight[vi] = transitions > 0 ? std::min(1.0, sum / transitions) : 0.0;
+  out.child_vertex_rule[vi] = vertex_rule_for(subdivide_sharpness(vs), child_sharp);
+  return out.vertex_rule[vi] != out.child_vertex_rule[vi];
+}
+
+// The weight of the parent's rule at a vertex whose rule changes
+// (Sdc::Crease::ComputeFractionalWeightAtVertex): the mean sharpness of
+// what stops being sharp, at most 1.
+double parent_rule_weight_at(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double tagged,
+                             const LevelCreasing& out) {
+  const double vs = effective_vertex_sharpness(topo, boundary, v, tagged, out);
+  int transitions = 0;
+  double sum = 0.0;
+  if (vs > 0.0 && subdivide_sharpness(vs) <= 0.0) {
+    ++transitions;
+    sum += vs;
   }
+  for (const Index e : topo.vertex_edges(v)) {
+    const double s = edge_sharpness_of(out, e);
+    if (s > 0.0 && s <= 1.0) {  // sharp now, smooth one level down
+      ++transitions;
+      sum += s;
+    }
+  }
+  return transitions > 0 ? std::min(1.0, sum / transitions) : 0.0;
 }
 
 }  // namespace
@@ -89,18 +106,30 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
   });
   if (!any_sharp) std::vector<double>().swap(out.edge_sharpness);
 
-  std::vector<double> vertex_sharpness(nv, 0.0);
+  std::vector<double> vertex_sharpness;  // tagged corners; empty without any
+  if (!mesh.tags.corners.empty()) detail::assign_large(vertex_sharpness, nv, 0.0);
   for (const CornerTag& c : mesh.tags.corners)
     if (c.vertex >= 0 && static_cast<std::size_t>(c.vertex) < nv)
       vertex_sharpness[static_cast<std::size_t>(c.vertex)] = std::max(vertex_sharpness[static_cast<std::size_t>(c.vertex)], c.sharpness);
+  auto tagged = [&](Index v) { return vertex_sharpness.empty() ? 0.0 : vertex_sharpness[static_cast<std::size_t>(v)]; };
 
   detail::assign_large(out.vertex_rule, nv);
   detail::assign_large(out.child_vertex_rule, nv);
-  detail::assign_large(out.parent_rule_weight, nv, 1.0);
-  // Every vertex writes only its own entries: a parallel loop.
+  // Every vertex writes only its own entries: parallel loops. Blend weights
+  // are stored only when some vertex's rule changes (semi-sharp features).
+  std::atomic<bool> any_change = false;
   tbb::parallel_for(tbb::blocked_range<Index>(0, topo.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& r) {
     for (Index v = r.begin(); v != r.end(); ++v)
-      classify_vertex(topo, boundary, v, vertex_sharpness[static_cast<std::size_t>(v)], out);
+      if (classify_vertex(topo, boundary, v, tagged(v), out)) any_change = true;
+  });
+  if (!any_change) return out;
+  detail::assign_large(out.parent_rule_weight, nv, 1.0);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, topo.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& r) {
+    for (Index v = r.begin(); v != r.end(); ++v) {
+      const auto vi = static_cast<std::size_t>(v);
+      if (out.vertex_rule[vi] != out.child_vertex_rule[vi])
+        out.parent_rule_weight[vi] = parent_rule_weight_at(topo, boundary, v, tagged(v), out);
+    }
   });
   return out;
 }

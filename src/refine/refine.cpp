@@ -24,13 +24,15 @@ BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RefineOptions& 
   return options.boundary.value_or(mesh.tags.boundary_interpolation);
 }
 
-// What the masks of one level see: the parent and its creasing.
+// What the masks of one level see: the parent and its creasing. The parent
+// mesh supplies positions, channels and tags; once its topology is derived
+// its face arrays are dropped (refine_levels): faces come from the topology.
 struct ParentLevel {
   const PolygonMesh& mesh;
   const MeshTopology& topology;
   const LevelCreasing& creasing;
-  LevelView view() const { return {mesh, topology, creasing.edge_sharpness, 0.0}; }
-  LevelView child_view() const { return {mesh, topology, creasing.edge_sharpness, 1.0}; }  // one level down
+  LevelView view() const { return {topology, creasing.edge_sharpness, 0.0}; }
+  LevelView child_view() const { return {topology, creasing.edge_sharpness, 1.0}; }  // one level down
 };
 
 // The mask of child vertex i: a face, edge or vertex point by its range, with
@@ -53,7 +55,7 @@ void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap&
   const auto vi = static_cast<std::size_t>(v);
   const VertexRule rule = parent.creasing.vertex_rule[vi];
   const VertexRule child_rule = parent.creasing.child_vertex_rule[vi];
-  const double w = parent.creasing.parent_rule_weight[vi];
+  const double w = parent.creasing.parent_rule_weight.empty() ? 1.0 : parent.creasing.parent_rule_weight[vi];
   if (rule == child_rule || w >= 1.0) return scheme.vertex_point(view, v, rule, mask);
   mask.set_scale(1.0 - w);
   scheme.vertex_point(parent.child_view(), v, child_rule, mask);
@@ -117,6 +119,14 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
     else topology = MeshTopology::from_triangle_split(*topology, level.child);
     current = std::move(level.child);
     if (options.on_level) options.on_level(l + 1, current);
+    // A derived topology holds a copy of the level's faces, and refinement
+    // reads faces only through the topology: drop the mesh's copy, the
+    // largest arrays of the level before the last (the final level keeps its
+    // faces; it gets no topology).
+    if (topology) {
+      std::vector<Index>().swap(current.face_offsets);
+      std::vector<Index>().swap(current.face_indices);
+    }
   }
   return current;
 }
@@ -177,7 +187,7 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const Parent
 // sorted by source.
 StencilTable record_stencils(const ParentLevel& view, const Scheme& scheme, const SplitMap& map,
                              const StencilTable* composed) {
-  StencilTable table(composed ? composed->source_count() : view.mesh.vertex_count());
+  StencilTable table(composed ? composed->source_count() : view.topology.vertex_count());
   tbb::enumerable_thread_specific<MaskBuilder> masks;
   auto fill = [&](Index i, detail::RowAccumulator& row) {
     MaskBuilder& mask = masks.local();

@@ -8,7 +8,7 @@ namespace subdiv::detail {
 
 /// Adds weight w spread evenly over the vertices of face f.
 inline void add_face_average(const LevelView& level, Index f, double w, MaskBuilder& mask) {
-  const auto face = level.mesh.face(f);
+  const auto face = level.topology.face_vertices(f);
   const double each = w / static_cast<double>(face.size());
   for (const Index v : face) mask.add(v, each);
 }

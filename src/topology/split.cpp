@@ -60,7 +60,7 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
     std::sort(holes.begin(), holes.end());
     holes.erase(std::unique(holes.begin(), holes.end()), holes.end());
     for (const Index f : holes) {
-      if (f < 0 || f >= parent.face_count()) continue;
+      if (f < 0 || f >= topology.face_count()) continue;
       const auto [first, last] = child_faces(topology, map.rule, f);
       for (Index cf = first; cf < last; ++cf) out.holes.push_back(cf);
     }

@@ -61,13 +61,25 @@ class MeshTopology {
   // --- faces and corners -------------------------------------------------
   Index face_size(Index f) const { return face_offsets_[f + 1] - face_offsets_[f]; }
   Index face_first_corner(Index f) const { return face_offsets_[f]; }
-  Index corner_face(Index c) const { return corner_face_[c]; }
+  /// The vertices of face f, in order (the mesh's face f).
+  std::span<const Index> face_vertices(Index f) const {
+    return {corner_vertex_.data() + face_offsets_[f], static_cast<std::size_t>(face_size(f))};
+  }
+  Index corner_face(Index c) const {
+    if (uniform_face_size_ == 4) return c / 4;  // constant divisors: no division instruction
+    if (uniform_face_size_ == 3) return c / 3;
+    return corner_face_[c];
+  }
   Index corner_vertex(Index c) const { return corner_vertex_[c]; }
   Index corner_next(Index c) const {
+    if (uniform_face_size_ == 4) return c % 4 == 3 ? c - 3 : c + 1;
+    if (uniform_face_size_ == 3) return c % 3 == 2 ? c - 2 : c + 1;
     const Index f = corner_face_[c];
     return c + 1 == face_offsets_[f + 1] ? face_offsets_[f] : c + 1;
   }
   Index corner_prev(Index c) const {
+    if (uniform_face_size_ == 4) return c % 4 == 0 ? c + 3 : c - 1;
+    if (uniform_face_size_ == 3) return c % 3 == 0 ? c + 2 : c - 1;
     const Index f = corner_face_[c];
     return c == face_offsets_[f] ? face_offsets_[f + 1] - 1 : c - 1;
   }
@@ -134,6 +146,10 @@ class MeshTopology {
 
   std::vector<Index> face_offsets_;
   std::vector<Index> corner_vertex_;
+  /// 3 or 4 when every face has that many corners: then corner_face_ stays
+  /// empty (face f owns corners [n f, n f + n)), which saves an array as
+  /// large as the faces on every refined level. 0 otherwise.
+  Index uniform_face_size_ = 0;
   std::vector<Index> corner_face_;
   std::vector<Index> corner_edge_;
 

@@ -32,7 +32,8 @@ struct LevelCreasing {
   std::vector<double> edge_sharpness;
   std::vector<VertexRule> vertex_rule;       ///< from this level's sharpness
   std::vector<VertexRule> child_vertex_rule; ///< from the sharpness one level down
-  std::vector<double> parent_rule_weight;    ///< w where the two rules differ, else 1
+  /// w where the two rules differ, else 1; empty when no rule differs.
+  std::vector<double> parent_rule_weight;
 };
 
 /// OpenSubdiv's uniform rule for a sharpness one level down.

@@ -32,13 +32,13 @@ enum class EdgeRule : std::uint8_t { smooth, crease };
 
 const char* to_string(VertexRule);
 
-/// What a mask may look at: the parent level and the sharpness of its edges.
+/// What a mask may look at: the parent level's topology (not its positions)
+/// and the sharpness of its edges.
 /// An edge is sharp for the rule being evaluated when its sharpness exceeds
 /// `sharp_above`: 0 for this level's rule, 1 for the rule one level down
 /// (a sharpness s becomes s - 1 there). Boundary and non-manifold edges are
 /// infinitely sharp. An empty sharpness array means no edge is sharp.
 struct LevelView {
-  const PolygonMesh& mesh;
   const MeshTopology& topology;
   std::span<const double> edge_sharpness;
   double sharp_above = 0.0;

@@ -35,16 +35,18 @@ struct SplitMap {
   Index vertex_point(Index v) const { return vertex_points + v; }
 };
 
-/// The child level's faces, tags (crease and corner sharpness decremented by
-/// one per level unless infinite, holes inherited) and face-varying channels
-/// (linearly interpolated within each face). `child.positions` is resized to
-/// the child vertex count and zero-filled; vertex channels are not created.
-/// Requires every face corner to have an edge (no degenerate faces) and, for
-/// the triangle split, triangles only; throws TopologyError otherwise.
 /// The child faces of parent face f, [first, last): the quad split makes one
 /// per corner (child face = parent corner), the triangle split 4f .. 4f+3.
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f);
 
+/// The child level's faces, tags (crease and corner sharpness decremented by
+/// one per level unless infinite, holes inherited) and face-varying channels
+/// (linearly interpolated within each face). `child.positions` is resized to
+/// the child vertex count and zero-filled; vertex channels are not created.
+/// The parent's faces are read from `topology` only (the parent mesh gives
+/// tags and face-varying channels).
+/// Requires every face corner to have an edge (no degenerate faces) and, for
+/// the triangle split, triangles only; throws TopologyError otherwise.
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
                         PolygonMesh& child);
 
