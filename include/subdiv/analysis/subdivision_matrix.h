@@ -1,0 +1,52 @@
+#pragma once
+// The local subdivision matrix of a scheme at one configuration, read off
+// the scheme's own refinement (Zorin's survey, section 2.1): build the
+// configuration's ring mesh, refine it once with the ordinary engine into a
+// stencil table, and restrict the rows of the neighbourhood's image one level
+// down to the neighbourhood's columns. No weight is written twice: the
+// matrix holds exactly what refinement computes.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "subdiv/analysis/configuration.h"
+#include "subdiv/core/types.h"
+#include "subdiv/rules/scheme.h"
+
+namespace subdiv {
+
+struct LocalSubdivisionMatrix {
+  Configuration configuration;
+  /// The neighbourhood: the centre and the vertices of the faces within
+  /// this many face rings of it (1: Catmull-Clark's 2k + 1, Loop's k + 1).
+  int rings = 1;
+  /// Row a: the neighbourhood's vertex a one level down, as weights on the
+  /// neighbourhood's vertices now (p_next = S p).
+  Eigen::MatrixXd S;
+  /// Each neighbourhood vertex's position in the planar layout, in the
+  /// order of S: the centre first, then ring by ring, counter-clockwise from
+  /// the first ray.
+  std::vector<Vec3> layout;
+  /// The face ring (0 = centre) of each neighbourhood vertex.
+  std::vector<int> ring_of;
+  /// Interior configurations: index of each vertex's image under the
+  /// rotation by 2 pi / k (S commutes with it). Empty otherwise.
+  std::vector<int> rotate;
+  /// True when the image rows use no vertex outside the neighbourhood; else
+  /// the first offending row is named in `invariance_note`.
+  bool invariant = true;
+  std::string invariance_note;
+};
+
+/// The matrix of `scheme` at `configuration` over a neighbourhood of `rings`
+/// face rings. Throws InvalidInputError for schemes or configurations the
+/// ring layout does not cover.
+LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings);
+
+/// The smallest neighbourhood (1 .. max_rings face rings) that is invariant,
+/// or the largest tried, not invariant, when none is.
+LocalSubdivisionMatrix invariant_subdivision_matrix(const Scheme& scheme, const Configuration& configuration,
+                                                    int max_rings = 4);
+
+}  // namespace subdiv

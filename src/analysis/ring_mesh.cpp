@@ -1,0 +1,94 @@
+#include "subdiv/analysis/ring_mesh.h"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+#include <tuple>
+
+#include "subdiv/core/error.h"
+
+namespace subdiv {
+
+double Configuration::sector_angle() const {
+  switch (kind) {
+    case Kind::interior: return 2.0 * std::numbers::pi;
+    case Kind::boundary: return std::numbers::pi;
+    case Kind::corner: return corner == CornerType::concave ? 1.5 * std::numbers::pi : 0.5 * std::numbers::pi;
+  }
+  return 2.0 * std::numbers::pi;
+}
+
+std::string Configuration::name() const {
+  const std::string count = " k=" + std::to_string(k);
+  switch (kind) {
+    case Kind::interior: return "interior" + count;
+    case Kind::boundary: return "boundary" + count;
+    case Kind::corner: return std::string(corner == CornerType::concave ? "concave" : "convex") + " corner" + count;
+  }
+  return count;
+}
+
+namespace {
+
+// Grid points are keyed by (sector, i, j). Sector s owns its points with
+// j >= 1; a point on ray s (j = 0, i >= 1) belongs to sector s - 1 as
+// (0, i), except on the first ray of an open fan. The centre is (0, 0, 0).
+class GridPoints {
+ public:
+  GridPoints(int sectors, bool closed, double angle, PolygonMesh& mesh)
+      : sectors_(sectors), closed_(closed), angle_(angle), mesh_(mesh) {}
+
+  Index at(int s, int i, int j) {
+    if (i == 0 && j == 0) s = 0;
+    else if (j == 0 && (s > 0 || closed_)) std::tie(s, i, j) = std::tuple{(s + sectors_ - 1) % sectors_, 0, i};
+    const auto [it, added] = index_.try_emplace(std::tuple{s, i, j}, mesh_.vertex_count());
+    if (added) mesh_.positions.push_back(i * ray(s) + j * ray(s + 1));
+    return it->second;
+  }
+
+ private:
+  Vec3 ray(int s) const {
+    const double a = angle_ * s / sectors_;
+    return {std::cos(a), std::sin(a), 0.0};
+  }
+
+  int sectors_;
+  bool closed_;
+  double angle_;
+  PolygonMesh& mesh_;
+  std::map<std::tuple<int, int, int>, Index> index_;
+};
+
+}  // namespace
+
+RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int rings) {
+  const int k = configuration.k;
+  const bool closed = configuration.kind == Configuration::Kind::interior;
+  if (k < (closed ? 3 : 1))
+    throw InvalidInputError(configuration.name() + ": needs k >= " + std::string(closed ? "3" : "1"));
+  if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
+  RingMesh ring;
+  GridPoints points(k, closed, configuration.sector_angle(), ring.mesh);
+  ring.centre = points.at(0, 0, 0);
+  for (int s = 0; s < k; ++s) {
+    if (split == SplitRule::quad) {
+      for (int i = 0; i < rings; ++i)
+        for (int j = 0; j < rings; ++j)
+          ring.mesh.add_face({points.at(s, i, j), points.at(s, i + 1, j), points.at(s, i + 1, j + 1), points.at(s, i, j + 1)});
+    } else {
+      for (int i = 0; i < rings; ++i)
+        for (int j = 0; i + j < rings; ++j) {
+          ring.mesh.add_face({points.at(s, i, j), points.at(s, i + 1, j), points.at(s, i, j + 1)});
+          if (i + j + 1 < rings)
+            ring.mesh.add_face({points.at(s, i + 1, j), points.at(s, i + 1, j + 1), points.at(s, i, j + 1)});
+        }
+    }
+  }
+  if (configuration.kind == Configuration::Kind::corner)
+    ring.mesh.tags.corners.push_back(
+        {ring.centre, kInfiniteSharpness, configuration.corner, configuration.sector_angle()});
+  return ring;
+}
+
+}  // namespace subdiv

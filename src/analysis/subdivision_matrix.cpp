@@ -1,0 +1,134 @@
+#include "subdiv/analysis/subdivision_matrix.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/core/error.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/refine/refine.h"
+
+namespace subdiv {
+
+namespace {
+
+constexpr double kLayoutTolerance = 1e-9;
+
+// The vertices of the faces within `rings` face rings of the centre, with
+// their ring numbers (-1 outside).
+std::vector<int> face_rings(const MeshTopology& topology, Index centre, int rings) {
+  std::vector<int> ring(static_cast<std::size_t>(topology.vertex_count()), -1);
+  ring[static_cast<std::size_t>(centre)] = 0;
+  std::vector<Index> frontier{centre};
+  for (int r = 1; r <= rings; ++r) {
+    std::vector<Index> next;
+    for (const Index v : frontier)
+      for (const Index c : topology.vertex_corners(v))
+        for (const Index w : topology.face_vertices(topology.corner_face(c)))
+          if (ring[static_cast<std::size_t>(w)] < 0) {
+            ring[static_cast<std::size_t>(w)] = r;
+            next.push_back(w);
+          }
+    frontier = std::move(next);
+  }
+  return ring;
+}
+
+// The vertex of `points` (among `candidates`) at p, or -1.
+Index vertex_at(const std::vector<Vec3>& points, const std::vector<Index>& candidates, Vec3 p) {
+  for (const Index v : candidates)
+    if (norm(points[static_cast<std::size_t>(v)] - p) < kLayoutTolerance) return v;
+  return kInvalidIndex;
+}
+
+double angle_of(Vec3 p) {
+  const double a = std::atan2(p.y, p.x);
+  return a < -kLayoutTolerance ? a + 2.0 * std::numbers::pi : std::max(a, 0.0);
+}
+
+}  // namespace
+
+LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings) {
+  if (rings < 1) throw InvalidInputError("subdivision matrix: rings must be >= 1, not " + std::to_string(rings));
+  // A margin of rings keeps the ring mesh's own boundary rules out of reach.
+  const RingMesh ring = ring_mesh(scheme.split, configuration, 2 * rings + 3);
+  const MeshTopology topology(ring.mesh);
+  const std::vector<int> ring_number = face_rings(topology, ring.centre, rings);
+
+  // The neighbourhood, ordered by ring, then angle, then distance.
+  std::vector<Index> coarse;
+  for (Index v = 0; v < ring.mesh.vertex_count(); ++v)
+    if (ring_number[static_cast<std::size_t>(v)] >= 0) coarse.push_back(v);
+  const auto& positions = ring.mesh.positions;
+  std::sort(coarse.begin(), coarse.end(), [&](Index a, Index b) {
+    const Vec3 pa = positions[static_cast<std::size_t>(a)], pb = positions[static_cast<std::size_t>(b)];
+    const int ra = ring_number[static_cast<std::size_t>(a)], rb = ring_number[static_cast<std::size_t>(b)];
+    if (ra != rb) return ra < rb;
+    const double aa = angle_of(pa), ab = angle_of(pb);
+    if (std::fabs(aa - ab) > kLayoutTolerance) return aa < ab;
+    return norm(pa) < norm(pb);
+  });
+  std::vector<int> column(static_cast<std::size_t>(ring.mesh.vertex_count()), -1);
+  for (std::size_t b = 0; b < coarse.size(); ++b) column[static_cast<std::size_t>(coarse[b])] = static_cast<int>(b);
+
+  // One step of the scheme as a stencil table, and of the split's own linear
+  // placement to find where each neighbourhood vertex went.
+  RefineOptions once;
+  once.levels = 1;
+  const StencilTable table = refine_stencil_table(ring.mesh, scheme, once);
+  const Scheme& placement = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
+  const PolygonMesh layout_child = refine(ring.mesh, placement, once);
+  std::vector<Index> all_child(static_cast<std::size_t>(layout_child.vertex_count()));
+  std::iota(all_child.begin(), all_child.end(), 0);
+
+  LocalSubdivisionMatrix m;
+  m.configuration = configuration;
+  m.rings = rings;
+  const auto n = static_cast<Eigen::Index>(coarse.size());
+  m.S = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index a = 0; a < n; ++a) {
+    const Vec3 p = positions[static_cast<std::size_t>(coarse[static_cast<std::size_t>(a)])];
+    m.layout.push_back(p);
+    m.ring_of.push_back(ring_number[static_cast<std::size_t>(coarse[static_cast<std::size_t>(a)])]);
+    const Index child = vertex_at(layout_child.positions, all_child, 0.5 * p);
+    if (child == kInvalidIndex) throw InvalidInputError(configuration.name() + ": no child vertex at a neighbourhood point");
+    const auto vertices = table.row_vertices(child);
+    const auto weights = table.row_weights(child);
+    for (std::size_t e = 0; e < vertices.size(); ++e) {
+      const int b = column[static_cast<std::size_t>(vertices[e])];
+      if (b >= 0) {
+        m.S(a, b) += weights[e];
+      } else if (weights[e] != 0.0 && m.invariant) {
+        m.invariant = false;
+        m.invariance_note = "neighbourhood vertex " + std::to_string(a) + " (ring " + std::to_string(m.ring_of.back()) +
+                            ") one level down uses a vertex outside the " + std::to_string(rings) + "-ring";
+      }
+    }
+  }
+  if (configuration.kind == Configuration::Kind::interior) {
+    const double turn = 2.0 * std::numbers::pi / configuration.k;
+    const double c = std::cos(turn), s = std::sin(turn);
+    std::vector<Index> indices(coarse.size());
+    std::iota(indices.begin(), indices.end(), 0);
+    for (const Vec3& p : m.layout) {
+      const Index image = vertex_at(m.layout, indices, {c * p.x - s * p.y, s * p.x + c * p.y, 0.0});
+      if (image == kInvalidIndex) throw InvalidInputError(configuration.name() + ": layout is not rotationally symmetric");
+      m.rotate.push_back(image);
+    }
+  }
+  return m;
+}
+
+LocalSubdivisionMatrix invariant_subdivision_matrix(const Scheme& scheme, const Configuration& configuration,
+                                                    int max_rings) {
+  LocalSubdivisionMatrix m;
+  for (int rings = 1; rings <= max_rings; ++rings) {
+    m = local_subdivision_matrix(scheme, configuration, rings);
+    if (m.invariant) return m;
+  }
+  return m;
+}
+
+}  // namespace subdiv
