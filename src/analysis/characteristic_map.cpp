@@ -1,0 +1,177 @@
+#include "subdiv/analysis/characteristic_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/core/error.h"
+#include "subdiv/refine/refine.h"
+
+namespace subdiv {
+
+namespace {
+
+double cross_z(Vec3 a, Vec3 b) { return a.x * b.y - a.y * b.x; }
+
+// +1 or -1 when every corner turns that way, 0 otherwise (folded or
+// degenerate). `scale` sets what counts as zero.
+int face_orientation(const std::vector<Vec3>& p, std::span<const Index> face, double scale) {
+  int sign = 0;
+  const std::size_t n = face.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 a = p[static_cast<std::size_t>(face[i])];
+    const Vec3 next = p[static_cast<std::size_t>(face[(i + 1) % n])];
+    const Vec3 prev = p[static_cast<std::size_t>(face[(i + n - 1) % n])];
+    const double c = cross_z(next - a, prev - a);
+    const int s = c > 1e-12 * scale ? 1 : c < -1e-12 * scale ? -1 : 0;
+    if (s == 0 || (sign != 0 && s != sign)) return 0;
+    sign = s;
+  }
+  return sign;
+}
+
+// Whether segments ab and cd share a point (touching counts); collinear
+// segments share one only if their extents overlap. eps: what counts as 0
+// for the cross products.
+bool segments_meet(Vec3 a, Vec3 b, Vec3 c, Vec3 d, double eps) {
+  auto side = [eps](double v) { return v > eps ? 1 : v < -eps ? -1 : 0; };
+  const int d1 = side(cross_z(b - a, c - a)), d2 = side(cross_z(b - a, d - a));
+  const int d3 = side(cross_z(d - c, a - c)), d4 = side(cross_z(d - c, b - c));
+  if (d1 == 0 && d2 == 0) {  // collinear: compare extents along the line
+    const Vec3 u = b - a;
+    const double t0 = dot(c - a, u), t1 = dot(d - a, u), len = dot(u, u);
+    return std::max(t0, t1) >= -eps && std::min(t0, t1) <= len + eps;
+  }
+  return d1 * d2 <= 0 && d3 * d4 <= 0;
+}
+
+// The outline of `mesh` (edges with one face) as one closed loop of
+// vertices, or empty when it is not a single loop.
+std::vector<Index> single_outline(const PolygonMesh& mesh) {
+  std::map<std::pair<Index, Index>, int> directed;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    const auto face = mesh.face(f);
+    for (std::size_t i = 0; i < face.size(); ++i) ++directed[{face[i], face[(i + 1) % face.size()]}];
+  }
+  std::map<Index, Index> next;
+  for (const auto& [edge, count] : directed)
+    if (!directed.contains({edge.second, edge.first})) {
+      if (next.contains(edge.first)) return {};
+      next[edge.first] = edge.second;
+    }
+  if (next.empty()) return {};
+  std::vector<Index> loop{next.begin()->first};
+  while (loop.size() <= next.size()) {
+    const auto it = next.find(loop.back());
+    if (it == next.end()) return {};
+    if (it->second == loop.front()) break;
+    loop.push_back(it->second);
+  }
+  return loop.size() == next.size() ? loop : std::vector<Index>{};
+}
+
+}  // namespace
+
+CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisionMatrix& matrix,
+                                     const Eigen::VectorXd& x, const Eigen::VectorXd& y, int levels) {
+  const auto n = static_cast<std::size_t>(matrix.S.rows());
+  if (static_cast<std::size_t>(x.size()) != n || static_cast<std::size_t>(y.size()) != n)
+    throw InvalidInputError("characteristic map: eigenvectors do not match the matrix");
+  if (levels < 1) throw InvalidInputError("characteristic map: levels must be >= 1");
+
+  // The same ring mesh the matrix was read from; neighbourhood vertices found
+  // by their layout positions.
+  const RingMesh ring = ring_mesh(scheme.split, matrix.configuration, 2 * matrix.rings + 3);
+  std::vector<char> in_neighbourhood(static_cast<std::size_t>(ring.mesh.vertex_count()), 0);
+  PolygonMesh control = ring.mesh;
+  for (Vec3& p : control.positions) p = Vec3{};
+  for (std::size_t a = 0; a < n; ++a) {
+    Index found = kInvalidIndex;
+    for (Index v = 0; v < ring.mesh.vertex_count() && found == kInvalidIndex; ++v)
+      if (norm(ring.mesh.positions[static_cast<std::size_t>(v)] - matrix.layout[a]) < 1e-9) found = v;
+    if (found == kInvalidIndex) throw InvalidInputError("characteristic map: the matrix's layout is not the ring's");
+    in_neighbourhood[static_cast<std::size_t>(found)] = 1;
+    control.positions[static_cast<std::size_t>(found)] = {x[static_cast<Eigen::Index>(a)], y[static_cast<Eigen::Index>(a)], 0.0};
+  }
+
+  RefineOptions options;
+  options.levels = levels;
+  const StencilTable table = refine_stencil_table(ring.mesh, scheme, options);
+  const Scheme& placement = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
+  const PolygonMesh layout = refine(ring.mesh, placement, options);
+  std::vector<Vec3> points(static_cast<std::size_t>(table.row_count()));
+  table.apply(control.positions, points);
+
+  // Child vertices whose limit depends on the neighbourhood alone.
+  std::vector<Index> kept(points.size(), kInvalidIndex);
+  CharacteristicMap map;
+  map.levels = levels;
+  for (Index r = 0; r < table.row_count(); ++r) {
+    const auto vertices = table.row_vertices(r);
+    const auto weights = table.row_weights(r);
+    bool inside = true;
+    for (std::size_t e = 0; e < vertices.size() && inside; ++e)
+      inside = weights[e] == 0.0 || in_neighbourhood[static_cast<std::size_t>(vertices[e])];
+    if (!inside) continue;
+    kept[static_cast<std::size_t>(r)] = map.image.vertex_count();
+    map.image.positions.push_back(points[static_cast<std::size_t>(r)]);
+  }
+  double scale = 0.0;
+  for (const Vec3& p : map.image.positions) scale = std::max(scale, dot(p, p));
+
+  const int k = matrix.configuration.k;
+  const double wedge = matrix.configuration.sector_angle() / k;
+  std::vector<Index> face;
+  for (Index f = 0; f < layout.face_count(); ++f) {
+    face.clear();
+    Vec3 centroid;
+    for (const Index v : layout.face(f)) {
+      face.push_back(kept[static_cast<std::size_t>(v)]);
+      centroid += layout.positions[static_cast<std::size_t>(v)];
+    }
+    if (std::find(face.begin(), face.end(), kInvalidIndex) != face.end()) continue;
+    map.image.add_face(face);
+    double angle = std::atan2(centroid.y, centroid.x);
+    if (angle < 0) angle += 2.0 * std::numbers::pi;
+    map.face_sector.push_back(std::min(k - 1, static_cast<int>(angle / wedge)));
+    map.face_orientation.push_back(face_orientation(map.image.positions, map.image.face(map.image.face_count() - 1), scale));
+  }
+  if (map.image.face_count() == 0) {
+    map.note = "no face of the ring depends on the neighbourhood alone";
+    return map;
+  }
+
+  const int first = map.face_orientation.front();
+  const auto bad = std::count_if(map.face_orientation.begin(), map.face_orientation.end(),
+                                 [&](int o) { return o == 0 || o != first; });
+  map.regular = first != 0 && bad == 0;
+  if (!map.regular) {
+    map.note = std::to_string(bad) + " of " + std::to_string(map.image.face_count()) +
+               " faces of the refined map are folded, degenerate or reversed (the Jacobian changes sign)";
+    return map;
+  }
+  const std::vector<Index> outline = single_outline(map.image);
+  if (outline.empty()) {
+    map.note = "the image's outline is not a single loop";
+    return map;
+  }
+  const std::size_t m = outline.size();
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 2; j < m; ++j) {
+      if (i == 0 && j + 1 == m) continue;  // adjacent across the loop's start
+      const Vec3 a = map.image.positions[static_cast<std::size_t>(outline[i])];
+      const Vec3 b = map.image.positions[static_cast<std::size_t>(outline[(i + 1) % m])];
+      const Vec3 c = map.image.positions[static_cast<std::size_t>(outline[j])];
+      const Vec3 d = map.image.positions[static_cast<std::size_t>(outline[(j + 1) % m])];
+      if (segments_meet(a, b, c, d, 1e-12 * scale)) {
+        map.note = "the image's outline crosses itself: the map overlaps itself";
+        return map;
+      }
+    }
+  map.injective = true;
+  return map;
+}
+
+}  // namespace subdiv
