@@ -96,27 +96,38 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
     control.positions[static_cast<std::size_t>(found)] = {x[static_cast<Eigen::Index>(a)], y[static_cast<Eigen::Index>(a)], 0.0};
   }
 
+  // Level by level: the per-level tables are the masks themselves, much
+  // smaller than one composed table. A child vertex is valid when every
+  // parent its mask uses is.
   RefineOptions options;
   options.levels = levels;
-  const StencilTable table = refine_stencil_table(ring.mesh, scheme, options);
+  const std::vector<StencilTable> tables = refine_stencils(ring.mesh, scheme, options);
   const Scheme& placement = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
   const PolygonMesh layout = refine(ring.mesh, placement, options);
-  std::vector<Vec3> points(static_cast<std::size_t>(table.row_count()));
-  table.apply(control.positions, points);
+  std::vector<Vec3> points = control.positions;
+  std::vector<char> valid = in_neighbourhood;
+  for (const StencilTable& table : tables) {
+    std::vector<Vec3> next(static_cast<std::size_t>(table.row_count()));
+    table.apply(points, next);
+    std::vector<char> next_valid(next.size(), 1);
+    for (Index r = 0; r < table.row_count(); ++r) {
+      const auto vertices = table.row_vertices(r);
+      const auto weights = table.row_weights(r);
+      for (std::size_t e = 0; e < vertices.size(); ++e)
+        if (weights[e] != 0.0 && !valid[static_cast<std::size_t>(vertices[e])]) next_valid[static_cast<std::size_t>(r)] = 0;
+    }
+    points = std::move(next);
+    valid = std::move(next_valid);
+  }
 
-  // Child vertices whose limit depends on the neighbourhood alone.
+  // The valid vertices, renumbered.
   std::vector<Index> kept(points.size(), kInvalidIndex);
   CharacteristicMap map;
   map.levels = levels;
-  for (Index r = 0; r < table.row_count(); ++r) {
-    const auto vertices = table.row_vertices(r);
-    const auto weights = table.row_weights(r);
-    bool inside = true;
-    for (std::size_t e = 0; e < vertices.size() && inside; ++e)
-      inside = weights[e] == 0.0 || in_neighbourhood[static_cast<std::size_t>(vertices[e])];
-    if (!inside) continue;
-    kept[static_cast<std::size_t>(r)] = map.image.vertex_count();
-    map.image.positions.push_back(points[static_cast<std::size_t>(r)]);
+  for (std::size_t r = 0; r < points.size(); ++r) {
+    if (!valid[r]) continue;
+    kept[r] = map.image.vertex_count();
+    map.image.positions.push_back(points[r]);
   }
   double scale = 0.0;
   for (const Vec3& p : map.image.positions) scale = std::max(scale, dot(p, p));

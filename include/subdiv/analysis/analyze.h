@@ -1,0 +1,70 @@
+#pragma once
+// A scheme's behaviour at one configuration, everything the survey's
+// section 5 asks (Zorin, "Subdivision on arbitrary meshes", 2.1-2.2, 5.3):
+// the local subdivision matrix read off the real rules, its spectrum, the
+// limit and tangent masks, Reif's eigenvalue condition, the characteristic
+// map's regularity and injectivity, the C1 verdict, and the curvature
+// behaviour of Proposition 6.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "subdiv/analysis/characteristic_map.h"
+#include "subdiv/analysis/spectrum.h"
+#include "subdiv/analysis/subdivision_matrix.h"
+
+namespace subdiv {
+
+enum class SmoothnessVerdict {
+  c1,                              ///< Reif's criterion holds
+  not_tangent_plane_continuous,    ///< the subdominant eigenvalues rule it out
+  inconclusive,                    ///< a sufficient condition fails; see the reason
+};
+const char* to_string(SmoothnessVerdict);
+
+/// Proposition 6 (for lambda = lambda_1 = lambda_2): compare lambda^2 with
+/// the largest other eigenvalue magnitude mu.
+enum class CurvatureBehaviour {
+  zero,       ///< mu < lambda^2: C2 possible, with zero curvature at the point
+  bounded,    ///< mu = lambda^2: bounded; C2 only if the lambda^2 eigenfunctions are quadratic
+  unbounded,  ///< mu > lambda^2: curvature diverges for generic data, not C2
+  not_applicable,  ///< lambda_1 != lambda_2, or no valid subdominant pair
+};
+const char* to_string(CurvatureBehaviour);
+
+struct ConfigurationAnalysis {
+  /// The smallest invariant neighbourhood: its matrix gives the masks.
+  LocalSubdivisionMatrix matrix;
+  /// One ring wider: its spectrum and eigenvectors give the verdicts and the
+  /// characteristic map (the limit surface around the centre depends on it).
+  LocalSubdivisionMatrix wide_matrix;
+  Spectrum spectrum;  ///< of wide_matrix
+  /// The leading eigenvalues lambda_0 .. lambda_3 (with multiplicity).
+  std::vector<std::complex<double>> leading;
+  /// Left eigenvectors on `matrix`'s neighbourhood (nullopt when they do not
+  /// exist): the limit-position mask (eigenvalue 1, sum 1) and the two
+  /// tangent masks (subdominant pair).
+  std::optional<Eigen::VectorXd> limit_mask;
+  std::optional<std::array<Eigen::VectorXd, 2>> tangent_masks;
+  /// Reif's eigenvalue condition: lambda_0 = 1 simple > lambda_1 >= lambda_2
+  /// > |lambda_3|, lambda_1 and lambda_2 real and positive, non-defective.
+  bool eigenvalue_condition = false;
+  std::optional<CharacteristicMap> characteristic_map;
+  SmoothnessVerdict verdict = SmoothnessVerdict::inconclusive;
+  std::string reason;  ///< why the verdict, in one sentence
+  CurvatureBehaviour curvature = CurvatureBehaviour::not_applicable;
+};
+
+struct AnalysisOptions {
+  double tolerance = 1e-9;
+  int max_rings = 4;           ///< largest neighbourhood tried for invariance
+  int characteristic_levels = 3;
+  bool characteristic_map = true;  ///< false: spectrum and masks only (faster)
+};
+
+ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration,
+                              const AnalysisOptions& options = {});
+
+}  // namespace subdiv

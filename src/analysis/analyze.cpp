@@ -1,0 +1,128 @@
+#include "subdiv/analysis/analyze.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace subdiv {
+
+const char* to_string(SmoothnessVerdict v) {
+  switch (v) {
+    case SmoothnessVerdict::c1: return "C1";
+    case SmoothnessVerdict::not_tangent_plane_continuous: return "not tangent-plane continuous";
+    case SmoothnessVerdict::inconclusive: return "inconclusive";
+  }
+  return "?";
+}
+
+const char* to_string(CurvatureBehaviour c) {
+  switch (c) {
+    case CurvatureBehaviour::zero: return "zero curvature";
+    case CurvatureBehaviour::bounded: return "bounded curvature";
+    case CurvatureBehaviour::unbounded: return "unbounded curvature";
+    case CurvatureBehaviour::not_applicable: return "-";
+  }
+  return "?";
+}
+
+namespace {
+
+bool close(double a, double b, double tolerance) { return std::fabs(a - b) <= tolerance * std::max(1.0, std::fabs(b)); }
+
+struct ConditionFailure {
+  std::string reason;  ///< empty when the condition holds
+  /// The failure rules out tangent-plane continuity for generic data.
+  bool rules_out_tangent_plane = false;
+};
+
+// Reif's eigenvalue condition on the spectrum, and why it fails.
+ConditionFailure eigenvalue_condition_failure(const Spectrum& s, double tolerance) {
+  if (s.values.empty() || !s.values[0].real() || !close(s.values[0].value.real(), 1.0, tolerance))
+    return {"the dominant eigenvalue is not 1 (the scheme is not affine invariant or diverges)"};
+  if (s.values[0].algebraic != 1) return {"the eigenvalue 1 is not simple"};
+  const std::vector<std::complex<double>> l = s.expanded();
+  if (l.size() < 4) return {"the neighbourhood is too small"};
+  if (std::abs(l[1]) >= 1.0 - tolerance) return {"a second eigenvalue of magnitude 1"};
+  // A simple real lambda_1 followed by two of one magnitude: the normal is
+  // the limit direction of c_1 ^ c_2 J[f_1, f_2] + c_1 ^ c_3 J[f_1, f_3]
+  // (survey, section 5.3), whose two terms shrink alike (lambda_2 = |lambda_3|),
+  // so it depends on the direction of approach.
+  if (l[1].imag() == 0.0 && std::abs(l[1]) > std::abs(l[2]) * (1.0 + tolerance) &&
+      close(std::abs(l[2]), std::abs(l[3]), tolerance))
+    return {fmt::format("lambda_1 = {:.6g} is simple and lambda_2, lambda_3 have one magnitude {:.6g}: the tangent "
+                        "plane depends on the direction of approach",
+                        l[1].real(), std::abs(l[2])),
+            true};
+  if (l[1].imag() != 0.0 || l[2].imag() != 0.0)
+    return {fmt::format("the subdominant eigenvalues are complex ({:.6g} +- {:.6g}i): the limit spirals",
+                        l[1].real(), std::fabs(l[1].imag()))};
+  if (l[1].real() <= 0.0 || l[2].real() <= 0.0) return {"a subdominant eigenvalue is not positive"};
+  if (std::abs(l[2]) <= std::abs(l[3]) * (1.0 + tolerance))
+    return {fmt::format("lambda_2 = {:.6g} does not dominate |lambda_3| = {:.6g}", std::abs(l[2]), std::abs(l[3]))};
+  for (const Eigenvalue& e : s.values)
+    if (e.defective() && std::abs(e.value) >= std::abs(l[2]) * (1.0 - tolerance))
+      return {fmt::format("the eigenvalue {:.6g} has a Jordan block", std::abs(e.value))};
+  return {};
+}
+
+CurvatureBehaviour curvature_of(const std::vector<std::complex<double>>& l, double tolerance) {
+  if (l.size() < 4 || !close(l[1].real(), l[2].real(), tolerance)) return CurvatureBehaviour::not_applicable;
+  const double lambda2 = l[1].real() * l[1].real();
+  // The largest magnitude among the eigenvalues other than 1 and lambda.
+  double mu = 0.0;
+  for (std::size_t i = 3; i < l.size(); ++i)
+    if (!close(std::abs(l[i]), l[1].real(), tolerance)) mu = std::max(mu, std::abs(l[i]));
+  if (close(mu, lambda2, tolerance)) return CurvatureBehaviour::bounded;
+  return mu < lambda2 ? CurvatureBehaviour::zero : CurvatureBehaviour::unbounded;
+}
+
+}  // namespace
+
+ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration, const AnalysisOptions& options) {
+  ConfigurationAnalysis a;
+  a.matrix = invariant_subdivision_matrix(scheme, configuration, options.max_rings);
+  if (!a.matrix.invariant) {
+    a.reason = "no invariant neighbourhood within " + std::to_string(options.max_rings) +
+               " rings: " + a.matrix.invariance_note;
+    return a;
+  }
+  a.wide_matrix = local_subdivision_matrix(scheme, configuration, a.matrix.rings + 1);
+  if (!a.wide_matrix.rotate.empty())
+    a.spectrum = spectrum_by_rotation(a.wide_matrix.S, {configuration.k, a.wide_matrix.rotate}, options.tolerance);
+  else
+    a.spectrum = spectrum(a.wide_matrix.S, options.tolerance);
+  const auto all = a.spectrum.expanded();
+  a.leading.assign(all.begin(), all.begin() + std::min<std::ptrdiff_t>(4, static_cast<std::ptrdiff_t>(all.size())));
+  a.limit_mask = left_eigenvector(a.matrix.S, 1.0, options.tolerance);
+  a.tangent_masks = tangent_masks(a.matrix.S, options.tolerance);
+
+  const ConditionFailure failure = eigenvalue_condition_failure(a.spectrum, options.tolerance);
+  a.eigenvalue_condition = failure.reason.empty();
+  a.curvature = a.eigenvalue_condition ? curvature_of(all, options.tolerance) : CurvatureBehaviour::not_applicable;
+  if (!a.eigenvalue_condition) {
+    a.verdict = failure.rules_out_tangent_plane ? SmoothnessVerdict::not_tangent_plane_continuous
+                                                : SmoothnessVerdict::inconclusive;
+    a.reason = "Reif's eigenvalue condition fails: " + failure.reason;
+    return a;
+  }
+  if (!options.characteristic_map) {
+    a.reason = "eigenvalue condition holds; characteristic map not checked";
+    return a;
+  }
+  const auto pair = subdominant_eigenvectors(a.wide_matrix.S, a.spectrum, options.tolerance);
+  if (!pair) {
+    a.reason = "no real basis of the subdominant eigenspace";
+    return a;
+  }
+  a.characteristic_map =
+      characteristic_map(scheme, a.wide_matrix, pair->vectors[0], pair->vectors[1], options.characteristic_levels);
+  if (a.characteristic_map->regular && a.characteristic_map->injective) {
+    a.verdict = SmoothnessVerdict::c1;
+    a.reason = "Reif's criterion: eigenvalue condition, characteristic map regular and injective";
+  } else {
+    a.reason = "characteristic map: " + a.characteristic_map->note;
+  }
+  return a;
+}
+
+}  // namespace subdiv
