@@ -83,7 +83,7 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
 
   // The same ring mesh the matrix was read from; neighbourhood vertices found
   // by their layout positions.
-  const RingMesh ring = ring_mesh(scheme.split, matrix.configuration, 2 * matrix.rings + 3);
+  const RingMesh ring = ring_mesh(scheme.split, matrix.configuration, ring_mesh_size(matrix.rings));
   std::vector<char> in_neighbourhood(static_cast<std::size_t>(ring.mesh.vertex_count()), 0);
   PolygonMesh control = ring.mesh;
   for (Vec3& p : control.positions) p = Vec3{};

@@ -52,8 +52,7 @@ double angle_of(Vec3 p) {
 
 LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings) {
   if (rings < 1) throw InvalidInputError("subdivision matrix: rings must be >= 1, not " + std::to_string(rings));
-  // A margin of rings keeps the ring mesh's own boundary rules out of reach.
-  const RingMesh ring = ring_mesh(scheme.split, configuration, 2 * rings + 3);
+  const RingMesh ring = ring_mesh(scheme.split, configuration, ring_mesh_size(rings));
   const MeshTopology topology(ring.mesh);
   const std::vector<int> ring_number = face_rings(topology, ring.centre, rings);
 

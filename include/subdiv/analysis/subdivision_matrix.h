@@ -39,6 +39,13 @@ struct LocalSubdivisionMatrix {
   std::string invariance_note;
 };
 
+/// The rings of faces of the ring mesh a neighbourhood of `rings` face rings
+/// is analysed on: one more ring makes every edge and vertex of the
+/// neighbourhood interior to the mesh, so the rules there are the ones the
+/// configuration has; one more keeps the outer boundary's rules away from
+/// the masks of the neighbourhood's image.
+inline int ring_mesh_size(int rings) { return rings + 2; }
+
 /// The matrix of `scheme` at `configuration` over a neighbourhood of `rings`
 /// face rings. Throws InvalidInputError for schemes or configurations the
 /// ring layout does not cover.
