@@ -154,13 +154,15 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
     return map;
   }
 
-  const int first = map.face_orientation.front();
-  const auto bad = std::count_if(map.face_orientation.begin(), map.face_orientation.end(),
-                                 [&](int o) { return o == 0 || o != first; });
-  map.regular = first != 0 && bad == 0;
+  // Faces against the majority orientation, or degenerate, make it irregular.
+  const auto positive = std::count(map.face_orientation.begin(), map.face_orientation.end(), 1);
+  const auto negative = std::count(map.face_orientation.begin(), map.face_orientation.end(), -1);
+  map.regular = map.image.face_count() == std::max(positive, negative);
   if (!map.regular) {
-    map.note = std::to_string(bad) + " of " + std::to_string(map.image.face_count()) +
-               " faces of the refined map are folded, degenerate or reversed (the Jacobian changes sign)";
+    map.note = std::to_string(std::min(positive, negative)) + " of " + std::to_string(map.image.face_count()) +
+               " faces of the refined map are reversed and " +
+               std::to_string(map.image.face_count() - positive - negative) +
+               " folded or degenerate (the Jacobian is not of one sign)";
     return map;
   }
   const std::vector<Index> outline = single_outline(map.image);

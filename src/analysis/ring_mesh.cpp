@@ -68,8 +68,13 @@ RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int ring
   if (k < (closed ? 3 : 1))
     throw InvalidInputError(configuration.name() + ": needs k >= " + std::string(closed ? "3" : "1"));
   if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
+  // The layout only identifies vertices (rules never read positions), but a
+  // sector must stay a proper wedge: one face spanning pi or more (a single
+  // face at a boundary, a concave corner) is laid out with a quarter turn.
+  const double angle = configuration.sector_angle() / k < 0.9 * std::numbers::pi ? configuration.sector_angle()
+                                                                                   : 0.5 * std::numbers::pi * k;
   RingMesh ring;
-  GridPoints points(k, closed, configuration.sector_angle(), ring.mesh);
+  GridPoints points(k, closed, angle, ring.mesh);
   ring.centre = points.at(0, 0, 0);
   for (int s = 0; s < k; ++s) {
     if (split == SplitRule::quad) {

@@ -25,7 +25,7 @@ struct CharacteristicMap {
   /// its orientation (+1, -1, or 0 when degenerate or folded).
   std::vector<int> face_sector;
   std::vector<int> face_orientation;
-  /// Every face has the orientation of the first (the Jacobian has one sign).
+  /// Every face has one orientation (the Jacobian has one sign).
   bool regular = false;
   /// Regular, and the outline of the image is a simple polygon.
   bool injective = false;

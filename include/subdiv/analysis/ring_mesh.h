@@ -3,7 +3,8 @@
 // (quads for the quad split, triangles for the triangle split) laid out in
 // the plane around the centre vertex at the origin. Sector s spans the rays
 // at angles a s / k and a (s + 1) / k (a = the configuration's sector
-// angle), and its grid point (i, j) sits at i u_s + j u_(s+1), u_s the unit
+// angle, or a quarter turn per face where a / k would reach pi), and its
+// grid point (i, j) sits at i u_s + j u_(s+1), u_s the unit
 // vector of ray s. Within a sector the layout is linear, so the split's own
 // placement (face centroids, edge midpoints) puts the child of a layout
 // point p at p / 2: that is how analysis identifies a neighbourhood with
