@@ -141,3 +141,29 @@ TEST(Analyze, WarrensWrongValenceThreeWeightIsCaught) {
 
 }  // namespace
 }  // namespace subdiv
+
+namespace subdiv {
+namespace {
+
+// With the plain curve rules at the boundary (OpenSubdiv's), regular and
+// low-valence boundary vertices are C1, but at higher valences the curve's
+// eigenvalue 1/2 stops being subdominant: the reason the survey introduces
+// the gamma(theta) edge rule (section 3.2).
+TEST(Analyze, PlainBoundaryRulesFailAtHighValence) {
+  auto boundary = [](int k) { return Configuration{Configuration::Kind::boundary, k, CornerType::convex}; };
+  for (const int k : {2, 3}) EXPECT_EQ(analyze(catmull_clark_scheme(), boundary(k)).verdict, SmoothnessVerdict::c1) << k;
+  for (const int k : {3, 4, 5}) EXPECT_EQ(analyze(loop_scheme(), boundary(k)).verdict, SmoothnessVerdict::c1) << k;
+  const ConfigurationAnalysis cc4 = analyze(catmull_clark_scheme(), boundary(4));
+  EXPECT_EQ(cc4.verdict, SmoothnessVerdict::not_tangent_plane_continuous) << cc4.reason;
+  EXPECT_NEAR(std::abs(cc4.leading[2]), 0.5, 1e-10);  // the curve's 1/2 ties with another eigenvalue
+  EXPECT_EQ(analyze(loop_scheme(), boundary(6)).verdict, SmoothnessVerdict::not_tangent_plane_continuous);
+  for (const int k : {5, 6}) {
+    const ConfigurationAnalysis a = analyze(catmull_clark_scheme(), boundary(k));
+    EXPECT_NE(a.verdict, SmoothnessVerdict::c1) << k;
+    ASSERT_TRUE(a.characteristic_map.has_value());
+    EXPECT_FALSE(a.characteristic_map->regular) << k;
+  }
+}
+
+}  // namespace
+}  // namespace subdiv
