@@ -49,7 +49,7 @@ std::vector<double> magnitudes(const Eigen::MatrixXd& S) {
 }
 
 TEST(Analyze, LoopMatchesItsClosedForms) {
-  for (int k = 3; k <= 12; ++k) {
+  for (int k = 3; k <= 16; ++k) {
     const ConfigurationAnalysis a = analyze(loop_scheme(), interior(k));
     EXPECT_EQ(a.verdict, SmoothnessVerdict::c1) << "k=" << k << ": " << a.reason;
     ASSERT_EQ(a.leading.size(), 4u);
@@ -78,7 +78,7 @@ TEST(Analyze, LoopMatchesItsClosedForms) {
 }
 
 TEST(Analyze, CatmullClarkMatchesStamsMatrixAndTheLimitMask) {
-  for (int k = 3; k <= 12; ++k) {
+  for (int k = 3; k <= 16; ++k) {
     const ConfigurationAnalysis a = analyze(catmull_clark_scheme(), interior(k));
     EXPECT_EQ(a.verdict, SmoothnessVerdict::c1) << "k=" << k << ": " << a.reason;
     // The one-ring matrix read off the rules is the formula's, entry for entry
