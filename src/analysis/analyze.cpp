@@ -1,5 +1,6 @@
 #include "subdiv/analysis/analyze.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -47,12 +48,18 @@ ConditionFailure eigenvalue_condition_failure(const Spectrum& s, double toleranc
   // the limit direction of c_1 ^ c_2 J[f_1, f_2] + c_1 ^ c_3 J[f_1, f_3]
   // (survey, section 5.3), whose two terms shrink alike (lambda_2 = |lambda_3|),
   // so it depends on the direction of approach.
+  // (With a Jordan block at that magnitude the terms grow like j lambda^j
+  // and the argument does not hold.)
   if (l[1].imag() == 0.0 && std::abs(l[1]) > std::abs(l[2]) * (1.0 + tolerance) &&
-      close(std::abs(l[2]), std::abs(l[3]), tolerance))
-    return {fmt::format("lambda_1 = {:.6g} is simple and lambda_2, lambda_3 have one magnitude {:.6g}: the tangent "
-                        "plane depends on the direction of approach",
-                        l[1].real(), std::abs(l[2])),
-            true};
+      close(std::abs(l[2]), std::abs(l[3]), tolerance)) {
+    const bool jordan = std::any_of(s.values.begin(), s.values.end(), [&](const Eigenvalue& e) {
+      return e.defective() && close(std::abs(e.value), std::abs(l[2]), tolerance);
+    });
+    return {fmt::format("lambda_1 = {:.6g} is simple and lambda_2, lambda_3 have one magnitude {:.6g}{}",
+                        l[1].real(), std::abs(l[2]),
+                        jordan ? ", with a Jordan block there" : ": the tangent plane depends on the direction of approach"),
+            !jordan};
+  }
   if (l[1].imag() != 0.0 || l[2].imag() != 0.0)
     return {fmt::format("the subdominant eigenvalues are complex ({:.6g} +- {:.6g}i): the limit spirals",
                         l[1].real(), std::fabs(l[1].imag()))};

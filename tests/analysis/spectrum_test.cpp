@@ -73,8 +73,8 @@ Eigen::MatrixXd random_commuting(const RotationalStructure& r, unsigned seed, do
     for (int l = 0; l < n; ++l) {
       if (!std::isnan(S(i, l))) continue;
       const double w = u(rng) + (i == l ? diagonal : 0.0);
-      for (int a = i, b = l, t = 0; t < r.k; ++t, a = r.rotate[static_cast<std::size_t>(a)],
-               b = r.rotate[static_cast<std::size_t>(b)])
+      for (int a = i, b = l, t = 0; t < r.k;
+           ++t, a = r.rotate[static_cast<std::size_t>(a)], b = r.rotate[static_cast<std::size_t>(b)])
         S(a, b) = w;
     }
   return S;
@@ -82,13 +82,13 @@ Eigen::MatrixXd random_commuting(const RotationalStructure& r, unsigned seed, do
 
 // Loop's vertex rule on the one-ring (centre, then k neighbours in order),
 // built here from the survey's weights (section 3.2) with Loop's beta.
-double loop_beta(int k) {
+double one_ring_beta(int k) {
   const double c = 3.0 / 8.0 + 0.25 * std::cos(2.0 * kPi / k);
   return (5.0 / 8.0 - c * c) / k;
 }
 
 Eigen::MatrixXd loop_one_ring(int k) {
-  const double beta = loop_beta(k);
+  const double beta = one_ring_beta(k);
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(k + 1, k + 1);
   S(0, 0) = 1.0 - k * beta;
   for (int i = 1; i <= k; ++i) {
@@ -312,7 +312,7 @@ TEST(Spectrum, LoopOneRing) {
   for (const int k : {3, 4, 5, 6, 7, 8, 12, 64}) {
     SCOPED_TRACE("valence " + std::to_string(k));
     const Eigen::MatrixXd S = loop_one_ring(k);
-    const double beta = loop_beta(k);
+    const double beta = one_ring_beta(k);
     // Frequency 0: the centre and the ring average give 1 and 5/8 - k beta;
     // frequency j: 3/8 + (1/4) cos(2 pi j / k) (survey, section 3.2).
     std::vector<double> expected{1.0, 5.0 / 8.0 - k * beta};

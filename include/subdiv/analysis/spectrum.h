@@ -8,11 +8,15 @@
 //
 // Eigenvalues come from a Schur form. Computed copies of one eigenvalue are
 // clustered: copies within `tolerance * max(1, |lambda|)` of each other join;
-// copies further apart (up to (tolerance * max(1, |S|))^(1/m) for a joint
-// multiplicity m, the spread roundoff gives a Jordan block of size m) join
-// when S - mu I is numerically singular at their mean mu. Ranks count the
-// singular values above `tolerance * max(1, largest singular value)`.
-// `tolerance` must lie in (0, 0.1).
+// groups further apart, up to (tolerance * max(1, |S|))^(1/m) from their
+// mean mu for a joint multiplicity m (capped at 4; roundoff splits a Jordan
+// block of size m that far), join when no other computed eigenvalue lies as
+// close to mu and S - mu I is numerically singular. So a nearly defective
+// matrix (two eigenvalues closer than about sqrt(tolerance) with nearly
+// parallel eigenvectors) is reported as defective: at that tolerance it is.
+// Ranks and null spaces come from a column-pivoted QR: pivots at or below
+// `tolerance * max(1, largest pivot)` count as zero. `tolerance` must lie in
+// (0, 0.1).
 
 #include <Eigen/Core>
 #include <array>
@@ -80,7 +84,8 @@ Spectrum spectrum_by_rotation(const Eigen::MatrixXd& S, const RotationalStructur
 /// The left eigenvector l (l^T S = lambda l^T) of a real eigenvalue whose
 /// left eigenspace is one-dimensional; nullopt when lambda is not an
 /// eigenvalue or has more than one eigenvector. For lambda = 1 (within the
-/// tolerance) l is normalised to sum 1: the limit-position mask (a_0 = l.p).
+/// tolerance) l is normalised to sum 1: the limit-position mask (a_0 = l.p);
+/// nullopt if its entries sum to 0.
 /// Otherwise |l| = 1 and the first entry above half the largest magnitude is
 /// positive.
 std::optional<Eigen::VectorXd> left_eigenvector(const Eigen::MatrixXd& S, double lambda, double tolerance = 1e-9);
@@ -104,7 +109,10 @@ struct SubdominantPair {
 };
 
 /// Right eigenvectors of the subdominant pair, e.g. the control points of
-/// the characteristic map. nullopt when the conditions above fail.
+/// the characteristic map. nullopt when the conditions above fail. The
+/// overloads taking a Spectrum (e.g. from spectrum_by_rotation) skip the
+/// dense eigenvalue computation; they throw InvalidInputError when its
+/// dimension is not the matrix size.
 std::optional<SubdominantPair> subdominant_eigenvectors(const Eigen::MatrixXd& S, const Spectrum& spectrum,
                                                         double tolerance = 1e-9);
 std::optional<SubdominantPair> subdominant_eigenvectors(const Eigen::MatrixXd& S, double tolerance = 1e-9);
@@ -120,7 +128,7 @@ std::optional<SubdominantPair> subdominant_eigenvectors(const Eigen::MatrixXd& S
 /// (cos 2 pi j / k, sin 2 pi j / k) pair of the survey (section 2.2), up to
 /// scale.
 std::optional<std::array<Eigen::VectorXd, 2>> tangent_masks(const Eigen::MatrixXd& S, const Spectrum& spectrum,
-                                                             double tolerance = 1e-9);
+                                                            double tolerance = 1e-9);
 std::optional<std::array<Eigen::VectorXd, 2>> tangent_masks(const Eigen::MatrixXd& S, double tolerance = 1e-9);
 
 }  // namespace subdiv
