@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs subdiv on the bundled meshes:
-# inspects each one, converts it to PLY and OFF, and refines it with
-# Catmull-Clark (and the triangle meshes with Loop), results under out/.
+# inspects each one, converts it to PLY and OFF, refines it with
+# Catmull-Clark (and the triangle meshes with Loop), and moves its vertices
+# to their limit positions; then analyses Loop and Catmull-Clark at valences
+# 3..8 with pictures. Results under out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,5 +21,11 @@ for mesh in data/meshes/*.obj; do
     "$subdiv" refine "$mesh" -s loop -l 2 -o "out/${name}_loop2.obj"
   fi
   "$subdiv" refine "$mesh" -s catmull-clark -l 2 -o "out/${name}_catmull_clark2.obj"
+  "$subdiv" limit "$mesh" -s catmull-clark --normals -o "out/${name}_catmull_clark_limit.obj"
+done
+for scheme in loop catmull-clark; do
+  echo "== subdiv analyze -s $scheme -k 3..8"
+  "$subdiv" analyze -s "$scheme" -k 3..8 --plot-spectrum "out/${scheme}_spectrum.svg" \
+    --plot-charmap 5 "out/${scheme}_charmap5.png"
 done
 echo "demo: results in out/"

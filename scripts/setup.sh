@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libtbb-dev libcli11-dev libfmt-dev libfast-float-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  nlohmann-json3-dev libcairo2-dev libfontconfig-dev  # subdiv analyze: --json output, plots
   libassimp-dev libosd-dev  # peers in bench/ (Assimp import, OpenSubdiv topology)
 )
 

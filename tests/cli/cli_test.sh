@@ -103,6 +103,55 @@ cmp -s "$work/t1.ply" "$work/t2.ply" && pass || fail "refine output depends on t
 run refine-self 1 refine "$work/cc.obj" -o "$work/cc.obj" && stderr_has refine-self "output is the input file"
 run refine-levels 1 refine "$meshes/cube.obj" -l 40 -o "$work/x.obj" && stderr_one_line refine-levels
 
+# analyze: tables, JSON, plots and the error contract.
+run analyze-help 0 analyze --help && stdout_has analyze-help "Example" && stdout_has analyze-help "tangent masks"
+for scheme in loop catmull-clark; do
+  run "analyze-$scheme" 0 analyze -s "$scheme" -k 3..8 && stdout_has "analyze-$scheme" "lambda_1^2"
+  for k in 3 4 5 6; do
+    grep -qE "^interior k=$k .* C1 " "$work/out" && pass || fail "analyze $scheme: no C1 row for k=$k"
+  done
+done
+run analyze-boundary 0 analyze -s catmull-clark --boundary -k 1..5 && stdout_has analyze-boundary "boundary k=5"
+run analyze-corner 0 analyze -s loop --corner concave -k 1..3 && stdout_has analyze-corner "concave corner k=2"
+run analyze-json 0 analyze -s catmull-clark -k 3..5 --json
+for key in '"scheme": "catmull-clark"' '"limit_mask"' '"tangent_masks"' '"layout"' '"spectrum"' '"verdict": "C1"'; do
+  stdout_has analyze-json "$key"
+done
+if command -v python3 >/dev/null 2>&1; then
+  python3 -c 'import json, sys; assert len(json.load(sys.stdin)["configurations"]) == 3' <"$work/out" &&
+    pass || fail "analyze --json: not valid JSON with 3 configurations"
+fi
+run analyze-plots 0 analyze -s loop -k 3..6 --plot-spectrum "$work/spectrum.png" --plot-charmap 5 "$work/charmap.svg"
+[ "$(head -c 8 "$work/spectrum.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] && pass ||
+  fail "analyze --plot-spectrum: not a PNG"
+head -c 200 "$work/charmap.svg" | grep -qE '<\?xml|<svg' && pass || fail "analyze --plot-charmap: not an SVG"
+run analyze-plots2 0 analyze -s catmull-clark --plot-spectrum "$work/spectrum.svg" --plot-charmap 3 "$work/charmap.png"
+[ -s "$work/spectrum.svg" ] && [ -s "$work/charmap.png" ] && pass || fail "analyze: empty plot files"
+for bad in "-s butterfly-x" "-s loop -k 2" "-s loop -k 8..3" "-s loop -k 3..65" "-s loop -k x" \
+           "-s loop --boundary -k 0" "-s loop --plot-spectrum $work/plot.pdf" \
+           "-s loop --plot-charmap 5 $work/no/such/dir/c.svg" "-s bilinear --plot-charmap 5 $work/bilinear.svg"; do
+  # shellcheck disable=SC2086
+  run "analyze $bad" 1 analyze $bad && stderr_one_line "analyze $bad"
+done
+run analyze-unknown 1 analyze -s butterfly-x && stderr_has analyze-unknown "unknown scheme 'butterfly-x' (known: catmull-clark"
+[ ! -e "$work/plot.pdf" ] && [ ! -e "$work/bilinear.svg" ] && pass || fail "analyze left a plot after an error"
+leftovers=$(find "$work" -name '*.tmp-*' | wc -l)
+[ "$leftovers" -eq 0 ] && pass || fail "analyze left temporary files behind"
+
+# limit: every vertex at its limit position, normals as vn lines; inputs untouched.
+cp "$meshes/cube.obj" "$work/cube_in.obj"
+run limit-cc 0 limit "$work/cube_in.obj" -s catmull-clark --normals -o "$work/cube_limit.obj" &&
+  stdout_has limit-cc "8 vertices at their catmull-clark limit positions, with limit normals"
+[ "$(grep -c '^v ' "$work/cube_limit.obj")" -eq 8 ] && [ "$(grep -c '^vn ' "$work/cube_limit.obj")" -eq 8 ] && pass ||
+  fail "limit: expected 8 v and 8 vn lines"
+# The unit cube's Catmull-Clark corner limit (n^2 v + 4 sum e + sum f) / (n (n + 5)), n = 3: (1/4, 1/4, 1/4) at the origin.
+awk '/^v /{ok = ($2 - 0.25)^2 + ($3 - 0.25)^2 + ($4 - 0.25)^2 < 1e-24; exit} END{exit !ok}' "$work/cube_limit.obj" &&
+  pass || fail "limit: the first cube corner is not at (1/4, 1/4, 1/4)"
+cmp -s "$meshes/cube.obj" "$work/cube_in.obj" && pass || fail "limit modified its input"
+run limit-loop-quads 1 limit "$meshes/cube.obj" -s loop -o "$work/loop_limit.obj" && stderr_one_line limit-loop-quads
+run limit-loop 0 limit "$meshes/cube.obj" -s loop --triangulate -o "$work/loop_limit.obj"
+run limit-same-file 1 limit "$work/cube_in.obj" -o "$work/cube_in.obj" && stderr_one_line limit-same-file
+
 # Every shared mesh: exit 0 or 1, never a crash, and a failure is one line.
 if [ -d "$shared" ]; then
   while IFS= read -r -d '' mesh; do

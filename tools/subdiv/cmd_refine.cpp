@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "scheme_option.h"
 #include "output_checks.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
@@ -32,15 +33,8 @@ struct RefineCommandOptions {
   bool quiet = false;
 };
 
-std::string scheme_names() {
-  std::string names;
-  for (const Scheme* s : all_schemes()) names += (names.empty() ? "" : ", ") + std::string(s->name);
-  return names;
-}
-
 int run_refine(const RefineCommandOptions& opt) {
-  const Scheme* scheme = find_scheme(opt.scheme);
-  if (!scheme) throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + scheme_names() + ")");
+  const Scheme* scheme = &scheme_named(opt.scheme);
   check_output_path(opt.input, opt.output);
 
   MeshFile file = read_mesh(opt.input);

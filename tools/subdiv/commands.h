@@ -19,5 +19,7 @@ Command add_info_command(CLI::App& app);
 Command add_convert_command(CLI::App& app);
 Command add_refine_command(CLI::App& app);
 Command add_schemes_command(CLI::App& app);
+Command add_limit_command(CLI::App& app);
+Command add_analyze_command(CLI::App& app);
 
 }  // namespace subdiv::cli

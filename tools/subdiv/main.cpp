@@ -35,12 +35,15 @@ int main(int argc, char** argv) {
       "  subdiv convert data/meshes/elephant.obj /tmp/elephant.ply\n"
       "  subdiv refine data/meshes/spot_control_mesh.obj -s catmull-clark -l 2 -o /tmp/spot.obj\n"
       "  subdiv schemes\n"
+      "  subdiv analyze -s loop -k 3..8\n"
       "Run 'subdiv COMMAND --help' for a command's options.");
 
   const Command info = add_info_command(app);
   const Command convert = add_convert_command(app);
   const Command refine = add_refine_command(app);
   const Command schemes = add_schemes_command(app);
+  const Command limit = add_limit_command(app);
+  const Command analyze = add_analyze_command(app);
 
   try {
     app.parse(argc, argv);
@@ -60,6 +63,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("convert")) return convert();
     if (app.got_subcommand("refine")) return refine();
     if (app.got_subcommand("schemes")) return schemes();
+    if (app.got_subcommand("limit")) return limit();
+    if (app.got_subcommand("analyze")) return analyze();
     print_error("no command given (run 'subdiv --help' for usage)");
     return kExitBadInput;
   } catch (const subdiv::Error& e) {
