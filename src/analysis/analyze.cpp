@@ -87,13 +87,13 @@ CurvatureBehaviour curvature_of(const std::vector<std::complex<double>>& l, doub
 
 ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration, const AnalysisOptions& options) {
   ConfigurationAnalysis a;
-  a.matrix = invariant_subdivision_matrix(scheme, configuration, options.max_rings);
+  a.matrix = invariant_subdivision_matrix(scheme, configuration, options.max_rings, options.rules);
   if (!a.matrix.invariant) {
     a.reason = "no invariant neighbourhood within " + std::to_string(options.max_rings) +
                " rings: " + a.matrix.invariance_note;
     return a;
   }
-  a.wide_matrix = local_subdivision_matrix(scheme, configuration, a.matrix.rings + 1);
+  a.wide_matrix = local_subdivision_matrix(scheme, configuration, a.matrix.rings + 1, options.rules);
   if (!a.wide_matrix.rotate.empty())
     a.spectrum = spectrum_by_rotation(a.wide_matrix.S, {configuration.k, a.wide_matrix.rotate}, options.tolerance);
   else

@@ -99,11 +99,13 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
   // Level by level: the per-level tables are the masks themselves, much
   // smaller than one composed table. A child vertex is valid when every
   // parent its mask uses is.
-  RefineOptions options;
+  RefineOptions options = matrix.rules;
   options.levels = levels;
   const std::vector<StencilTable> tables = refine_stencils(ring.mesh, scheme, options);
   const Scheme& placement = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
-  const PolygonMesh layout = refine(ring.mesh, placement, options);
+  RefineOptions linear;
+  linear.levels = levels;
+  const PolygonMesh layout = refine(ring.mesh, placement, linear);
   std::vector<Vec3> points = control.positions;
   std::vector<char> valid = in_neighbourhood;
   for (const StencilTable& table : tables) {

@@ -22,7 +22,7 @@ struct Masks {
 
 class MaskCache {
  public:
-  explicit MaskCache(const Scheme& scheme) : scheme_(scheme) {}
+  MaskCache(const Scheme& scheme, const RefineOptions& rules) : scheme_(scheme), rules_(rules) {}
 
   const Masks& at(Configuration::Kind kind, int k) {
     const auto key = std::pair{static_cast<int>(kind), k};
@@ -30,6 +30,7 @@ class MaskCache {
     if (it != cache_.end()) return it->second;
     AnalysisOptions options;
     options.characteristic_map = false;
+    options.rules = rules_;
     const ConfigurationAnalysis a = analyze(scheme_, {kind, k, CornerType::convex}, options);
     if (a.matrix.invariant && a.matrix.rings != 1)
       throw InvalidInputError(std::string(scheme_.name) + ": limit masks over more than the one-ring are not supported yet");
@@ -38,6 +39,7 @@ class MaskCache {
 
  private:
   const Scheme& scheme_;
+  RefineOptions rules_;
   std::map<std::pair<int, int>, Masks> cache_;
 };
 
@@ -90,7 +92,7 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   const LevelCreasing creasing = compute_creasing(current, t, boundary);
   const bool quads = scheme.split == SplitRule::quad;
   const Index face_size = quads ? 4 : 3;
-  MaskCache cache(scheme);
+  MaskCache cache(scheme, options.refine);
 
   LimitResult result;
   result.positions.resize(where.size());

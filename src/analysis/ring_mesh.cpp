@@ -14,7 +14,9 @@ double Configuration::sector_angle() const {
   switch (kind) {
     case Kind::interior: return 2.0 * std::numbers::pi;
     case Kind::boundary: return std::numbers::pi;
-    case Kind::corner: return corner == CornerType::concave ? 1.5 * std::numbers::pi : 0.5 * std::numbers::pi;
+    case Kind::corner:
+      if (angle > 0.0) return angle;
+      return corner == CornerType::concave ? 1.5 * std::numbers::pi : 0.5 * std::numbers::pi;
   }
   return 2.0 * std::numbers::pi;
 }
@@ -24,7 +26,11 @@ std::string Configuration::name() const {
   switch (kind) {
     case Kind::interior: return "interior" + count;
     case Kind::boundary: return "boundary" + count;
-    case Kind::corner: return std::string(corner == CornerType::concave ? "concave" : "convex") + " corner" + count;
+    case Kind::corner: {
+      std::string name = std::string(corner == CornerType::concave ? "concave" : "convex") + " corner" + count;
+      if (angle > 0.0) name += " alpha=" + std::to_string(static_cast<int>(std::lround(angle * 180.0 / std::numbers::pi))) + "deg";
+      return name;
+    }
   }
   return count;
 }
@@ -68,6 +74,8 @@ RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int ring
   if (k < (closed ? 3 : 1))
     throw InvalidInputError(configuration.name() + ": needs k >= " + std::string(closed ? "3" : "1"));
   if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
+  if (configuration.angle < 0.0 || configuration.angle >= 2.0 * std::numbers::pi)
+    throw InvalidInputError(configuration.name() + ": the corner angle must be in (0, 2 pi)");
   // The layout only identifies vertices (rules never read positions), but a
   // sector must stay a proper wedge: one face spanning pi or more (a single
   // face at a boundary, a concave corner) is laid out with a quarter turn.

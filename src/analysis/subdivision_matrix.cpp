@@ -50,7 +50,8 @@ double angle_of(Vec3 p) {
 
 }  // namespace
 
-LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings) {
+LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings,
+                                                const RefineOptions& rules) {
   if (rings < 1) throw InvalidInputError("subdivision matrix: rings must be >= 1, not " + std::to_string(rings));
   const RingMesh ring = ring_mesh(scheme.split, configuration, ring_mesh_size(rings));
   const MeshTopology topology(ring.mesh);
@@ -74,16 +75,20 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
 
   // One step of the scheme as a stencil table, and of the split's own linear
   // placement to find where each neighbourhood vertex went.
-  RefineOptions once;
+  RefineOptions once = rules;
   once.levels = 1;
+  once.on_level = nullptr;
   const StencilTable table = refine_stencil_table(ring.mesh, scheme, once);
   const Scheme& placement = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
-  const PolygonMesh layout_child = refine(ring.mesh, placement, once);
+  RefineOptions linear;
+  linear.levels = 1;
+  const PolygonMesh layout_child = refine(ring.mesh, placement, linear);
   std::vector<Index> all_child(static_cast<std::size_t>(layout_child.vertex_count()));
   std::iota(all_child.begin(), all_child.end(), 0);
 
   LocalSubdivisionMatrix m;
   m.configuration = configuration;
+  m.rules = once;
   m.rings = rings;
   const auto n = static_cast<Eigen::Index>(coarse.size());
   m.S = Eigen::MatrixXd::Zero(n, n);
@@ -121,10 +126,10 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
 }
 
 LocalSubdivisionMatrix invariant_subdivision_matrix(const Scheme& scheme, const Configuration& configuration,
-                                                    int max_rings) {
+                                                    int max_rings, const RefineOptions& rules) {
   LocalSubdivisionMatrix m;
   for (int rings = 1; rings <= max_rings; ++rings) {
-    m = local_subdivision_matrix(scheme, configuration, rings);
+    m = local_subdivision_matrix(scheme, configuration, rings, rules);
     if (m.invariant) return m;
   }
   return m;

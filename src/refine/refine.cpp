@@ -14,6 +14,7 @@
 
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/validation.h"
+#include "piecewise_smooth.h"
 #include "row_accumulator.h"
 
 namespace subdiv {
@@ -31,8 +32,9 @@ struct ParentLevel {
   const PolygonMesh& mesh;
   const MeshTopology& topology;
   const LevelCreasing& creasing;
-  LevelView view() const { return {topology, creasing.edge_sharpness, 0.0}; }
-  LevelView child_view() const { return {topology, creasing.edge_sharpness, 1.0}; }  // one level down
+  std::span<const double> sector_angle;  ///< piecewise-smooth rules only
+  LevelView view() const { return {topology, creasing.edge_sharpness, 0.0, sector_angle}; }
+  LevelView child_view() const { return {topology, creasing.edge_sharpness, 1.0, sector_angle}; }  // one level down
 };
 
 // The mask of child vertex i: a face, edge or vertex point by its range, with
@@ -89,17 +91,24 @@ void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const 
 struct Level {
   PolygonMesh child;
   SplitMap map;
+  /// Concave corners whose one-ring `fn` modifies after the masks
+  /// (piecewise-smooth rules).
+  std::vector<detail::FlatnessSite> flatness;
 };
 
 // One step: the child's faces and tags, then `fn` with the parent level and
 // its creasing for the masks.
 template <typename Fn>
 Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const Scheme& scheme,
-                  BoundaryInterpolation boundary, Fn&& fn) {
+                  BoundaryInterpolation boundary, const RefineOptions& options, Fn&& fn) {
   const LevelCreasing creasing = compute_creasing(parent, topology, boundary);
+  std::vector<double> sector_angle;
+  if (options.boundary_rules == BoundaryRules::piecewise_smooth)
+    sector_angle = detail::sector_angles(parent, topology, creasing);
   Level level;
   level.map = split_topology(parent, topology, scheme.split, level.child);
-  fn(ParentLevel{parent, topology, creasing}, level);
+  level.flatness = detail::flatness_sites(scheme, topology, creasing, sector_angle, level.map, options);
+  fn(ParentLevel{parent, topology, creasing, sector_angle}, level);
   return level;
 }
 
@@ -110,6 +119,8 @@ template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
                           const RefineOptions& options, Step&& step) {
   PolygonMesh current = mesh;
+  if (options.boundary_rules == BoundaryRules::piecewise_smooth && options.corner_angles == CornerAngles::measured)
+    detail::measure_corner_angles(current, coarse_topology);
   std::optional<MeshTopology> topology = std::move(coarse_topology);
   for (int l = 0; l < options.levels; ++l) {
     if (!topology) topology.emplace(current);
@@ -281,8 +292,9 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   PolygonMesh result;
   run_with_threads(options.threads, [&] {
     result = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& level) {
+      return refine_step(parent, topology, scheme, boundary, options, [&](const ParentLevel& view, Level& level) {
         evaluate_fast(parent, scheme, view, level);
+        detail::apply_flatness(level.flatness, level.child);
       });
     });
   });
@@ -296,8 +308,9 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
   std::vector<StencilTable> tables;
   run_with_threads(options.threads, [&] {
     PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      Level level = refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
+      Level level = refine_step(parent, topology, scheme, boundary, options, [&](const ParentLevel& view, Level& lv) {
         tables.push_back(record_stencils(view, scheme, lv.map, nullptr));
+        detail::apply_flatness(lv.flatness, tables.back());
       });
       if (final_level) tables.back().apply(parent.positions, level.child.positions);
       return level;
@@ -313,13 +326,17 @@ StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme,
   std::optional<StencilTable> total;
   run_with_threads(options.threads, [&] {
     refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
+      return refine_step(parent, topology, scheme, boundary, options, [&](const ParentLevel& view, Level& lv) {
         total = record_stencils(view, scheme, lv.map, total ? &*total : nullptr);
+        detail::apply_flatness(lv.flatness, *total);
       });
     });
   });
   return total ? std::move(*total) : StencilTable::identity(mesh.vertex_count());
 }
+
+const char* to_string(BoundaryRules r) { return r == BoundaryRules::standard ? "standard" : "piecewise-smooth"; }
+const char* to_string(CornerAngles a) { return a == CornerAngles::fixed ? "fixed" : "measured"; }
 
 StencilTable compose(const std::vector<StencilTable>& levels) {
   if (levels.empty()) return StencilTable();

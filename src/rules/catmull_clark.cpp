@@ -15,8 +15,16 @@
 // and 3/4, 1/8, 1/8 at crease vertices; corners are kept; darts use the
 // smooth rule; semi-sharp features blend these (refine/creasing.cpp). This is
 // OpenSubdiv's Sdc::Scheme<SCHEME_CATMARK>.
+// Piecewise-smooth rules (survey section 3.3, after Biermann, Levin and
+// Zorin 2000): next to a crease, boundary or corner vertex v, a smooth edge
+// point weights v with 3/4 - gamma and the other end with gamma (1/16 on the
+// four other vertices of its two quads), gamma(theta_k) = 3/8 - 1/4
+// cos(theta_k); the regular boundary (k = 2, theta = pi/2) keeps 3/8, 3/8.
+// In the face-point form below, the ends' 1/4 each move by the same amount.
 
 #include "subdiv/rules/catmull_clark.h"
+
+#include <cmath>
 
 #include "rule_helpers.h"
 
@@ -24,14 +32,17 @@ namespace subdiv {
 
 namespace {
 
+double gamma_of(double theta) { return catmull_clark_gamma(theta); }
+
 void face_point(const LevelView& level, Index f, MaskBuilder& mask) { detail::add_face_average(level, f, 1.0, mask); }
 
 void edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBuilder& mask) {
   const auto sides = level.topology.edge_corners(e);
   if (rule == EdgeRule::crease || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
   const auto [a, b] = level.topology.edge_vertices(e);
-  mask.add(a, 0.25);
-  mask.add(b, 0.25);
+  const double shift = detail::piecewise_smooth_shift(level, e, a, b, gamma_of);
+  mask.add(a, 0.25 + shift);
+  mask.add(b, 0.25 - shift);
   for (const Index c : sides) mask.add_face_point(level.topology.corner_face(c), 0.25);
 }
 
@@ -46,6 +57,8 @@ void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder&
 }
 
 }  // namespace
+
+double catmull_clark_gamma(double theta) { return 0.375 - 0.25 * std::cos(theta); }
 
 const Scheme& catmull_clark_scheme() {
   static const Scheme scheme{

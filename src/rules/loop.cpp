@@ -6,6 +6,14 @@
 //   edge point    3/8 (v0 + v1) + 1/8 (the two vertices opposite the edge);
 //   vertex point  (1 - k beta) v + beta sum v_i over the k ring neighbours;
 //   sharp or boundary edge: midpoint; crease vertex: 3/4, 1/8, 1/8; corner kept.
+// Piecewise-smooth rules (survey section 3.2, after Biermann, Levin and
+// Zorin 2000): next to a crease, boundary or corner vertex v, a smooth edge
+// point weights v with 3/4 - gamma and the other end with gamma,
+//   gamma(theta_k) = 1/2 - 1/4 cos(theta_k)
+// (theta_k = pi/k at a crease vertex with k faces in the sector: gamma = 3/8
+// at the regular k = 3). This makes the sector's first sine eigenvector,
+// x_i = sin(i theta_k) on the ring, an eigenvector with eigenvalue
+// gamma + 1/4 cos(pi/k) = 1/2, the boundary curve's own.
 //
 // Two named choices of beta:
 //   loop         beta(k) = (1/k) (5/8 - (3/8 + 1/4 cos(2 pi / k))^2), Loop's
@@ -56,6 +64,8 @@ double loop_beta(int k) {
 
 double loop_warren_beta(int k) { return k == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * k); }
 
+double loop_gamma(double theta) { return 0.5 - 0.25 * std::cos(theta); }
+
 namespace {
 
 void edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBuilder& mask) {
@@ -63,8 +73,9 @@ void edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBuilder& mas
   const auto sides = t.edge_corners(e);
   if (rule == EdgeRule::crease || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
   const auto [a, b] = t.edge_vertices(e);
-  mask.add(a, 0.375);
-  mask.add(b, 0.375);
+  const double shift = detail::piecewise_smooth_shift(level, e, a, b, loop_gamma);
+  mask.add(a, 0.375 + shift);
+  mask.add(b, 0.375 - shift);
   for (const Index c : sides) mask.add(t.corner_vertex(t.corner_prev(c)), 0.125);  // opposite vertex
 }
 

@@ -6,6 +6,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +39,9 @@ struct AnalyzeCommandOptions {
   std::pair<int, std::string> plot_charmap;  // K FILE
   bool plot_charmap_given = false;
   bool no_charmap = false;
+  std::optional<double> angle_degrees;
+  std::string boundary_rules = "standard";
+  std::optional<double> flatness;
 };
 
 int parse_int(std::string_view text, const std::string& what) {
@@ -126,6 +131,14 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
     base.kind = Configuration::Kind::corner;
     base.corner = opt.corner == "concave" ? CornerType::concave : CornerType::convex;
   }
+  if (opt.angle_degrees) {
+    const double degrees = *opt.angle_degrees;
+    if (base.kind != Configuration::Kind::corner) throw InvalidInputError("--angle applies to --corner configurations");
+    if ((base.corner == CornerType::convex) != (degrees < 180.0))
+      throw InvalidInputError(fmt::format("--angle {}: a {} corner's angle must be {} 180 degrees", degrees, opt.corner,
+                                          base.corner == CornerType::convex ? "below" : "above"));
+    base.angle = degrees * std::numbers::pi / 180.0;
+  }
   const std::string k_text = !opt.k.empty() ? opt.k : base.kind == Configuration::Kind::interior ? "3..12" : "1..12";
   const auto [k_first, k_last] = parse_k_range(k_text, base);
 
@@ -140,6 +153,9 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
 
   AnalysisOptions options;
   options.characteristic_map = !opt.no_charmap;
+  options.rules.boundary_rules =
+      opt.boundary_rules == "piecewise-smooth" ? BoundaryRules::piecewise_smooth : BoundaryRules::standard;
+  options.rules.flatness = opt.flatness;
   std::vector<ConfigurationAnalysis> results;
   for (int k = k_first; k <= k_last; ++k) {
     Configuration c = base;
@@ -171,7 +187,9 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
     if (!chosen) {
       Configuration c = base;
       c.k = charmap_k;
-      own = analyze(*scheme, c, AnalysisOptions{});
+      AnalysisOptions with_map = options;
+      with_map.characteristic_map = true;
+      own = analyze(*scheme, c, with_map);
       chosen = &own;
     }
     if (!chosen->characteristic_map)
@@ -205,6 +223,15 @@ Command add_analyze_command(CLI::App& app) {
   cmd->add_option("--corner", opt->corner, "Corner vertices with k faces, convex or concave (k >= 1)")
       ->check(CLI::IsMember({"convex", "concave"}))
       ->excludes(boundary);
+  cmd->add_option("--angle", opt->angle_degrees, "The corners' angle in degrees (default 90 convex, 270 concave)")
+      ->check(CLI::Range(0.0, 360.0).description("in (0, 360)"));
+  cmd->add_option("--boundary-rules", opt->boundary_rules,
+                  "Rules next to boundaries and corners: standard or piecewise-smooth (gamma(theta), flatness)")
+      ->check(CLI::IsMember({"standard", "piecewise-smooth"}))
+      ->capture_default_str();
+  cmd->add_option("--flatness", opt->flatness,
+                  "Flatness parameter s at concave corners (piecewise-smooth; default 1 - (1/4)/lambda_3, 0 = off)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--json", opt->json, "Print JSON (spectra, limit and tangent masks, layout) instead of the table");
   cmd->add_option("--plot-spectrum", opt->plot_spectrum, "Plot eigenvalue magnitudes against k (.svg or .png)")
       ->type_name("FILE");

@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "output_checks.h"
+#include "rule_options.h"
 #include "scheme_option.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/core/error.h"
@@ -27,6 +28,7 @@ struct LimitCommandOptions {
   bool allow_non_manifold = false;
   bool triangulate = false;
   bool ascii = false;
+  RuleOptionValues rules;
 };
 
 int run_limit(const LimitCommandOptions& opt) {
@@ -37,6 +39,7 @@ int run_limit(const LimitCommandOptions& opt) {
   if (opt.triangulate && scheme->needs_triangles) file.mesh = triangulate(file.mesh);
 
   LimitOptions options;
+  apply_rule_options(opt.rules, file.mesh, options.refine);
   options.isolation_levels = opt.isolation_levels;
   options.normals = opt.normals;
   options.refine.allow_non_manifold = opt.allow_non_manifold;
@@ -84,6 +87,7 @@ Command add_limit_command(CLI::App& app) {
   cmd->add_flag("--normals", opt->normals, "Also write limit normals (from the tangent masks)");
   cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold, "Treat non-manifold elements as sharp");
   cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
+  add_rule_options(*cmd, opt->rules);
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
   cmd->footer(
       "The masks are the left eigenvectors of the scheme's local subdivision matrices\n"

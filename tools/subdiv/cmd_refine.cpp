@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "rule_options.h"
 #include "scheme_option.h"
 #include "output_checks.h"
 #include "subdiv/core/error.h"
@@ -31,6 +32,7 @@ struct RefineCommandOptions {
   bool triangulate = false;
   bool ascii = false;
   bool quiet = false;
+  RuleOptionValues rules;
 };
 
 int run_refine(const RefineCommandOptions& opt) {
@@ -51,6 +53,7 @@ int run_refine(const RefineCommandOptions& opt) {
                  opt.input.c_str(), file.mesh.tags.other.size(), file.mesh.tags.other.front().name.c_str());
 
   RefineOptions options;
+  apply_rule_options(opt.rules, file.mesh, options);
   options.levels = opt.levels;
   options.allow_non_manifold = opt.allow_non_manifold;
   options.threads = opt.threads;
@@ -117,6 +120,7 @@ Command add_refine_command(CLI::App& app) {
   cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold,
                 "Refine non-manifold or inconsistently oriented meshes, treating those elements as sharp");
   cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
+  add_rule_options(*cmd, opt->rules);
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
   cmd->add_flag("-q,--quiet", opt->quiet, "No progress lines on stderr");
   cmd->footer(

@@ -14,6 +14,7 @@
 #include "subdiv/analysis/characteristic_map.h"
 #include "subdiv/analysis/spectrum.h"
 #include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/refine/refine.h"
 
 namespace subdiv {
 
@@ -62,6 +63,8 @@ struct AnalysisOptions {
   int max_rings = 4;           ///< largest neighbourhood tried for invariance
   int characteristic_levels = 3;
   bool characteristic_map = true;  ///< false: spectrum and masks only (faster)
+  /// The rules the configuration is refined with (boundary rules, flatness).
+  RefineOptions rules;
 };
 
 ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration,

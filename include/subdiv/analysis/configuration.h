@@ -16,9 +16,12 @@ struct Configuration {
   int k = 6;
   /// Corners only: convex (sector angle pi/2 by default) or concave (3 pi/2).
   CornerType corner = CornerType::convex;
+  /// Corners only: the sector angle alpha in radians; 0 for the type's
+  /// default (pi/2 convex, 3 pi/2 concave).
+  double angle = 0.0;
 
   /// The angle the k faces span in the canonical layout: 2 pi, pi, or the
-  /// corner's pi/2 (convex) and 3 pi/2 (concave).
+  /// corner's angle (by default pi/2 convex, 3 pi/2 concave).
   double sector_angle() const;
   /// "interior k=5", "boundary k=3", "convex corner k=2".
   std::string name() const;

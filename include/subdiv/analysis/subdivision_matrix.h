@@ -12,12 +12,15 @@
 
 #include "subdiv/analysis/configuration.h"
 #include "subdiv/core/types.h"
+#include "subdiv/refine/refine.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv {
 
 struct LocalSubdivisionMatrix {
   Configuration configuration;
+  /// The rules the ring mesh was refined with (levels aside).
+  RefineOptions rules;
   /// The neighbourhood: the centre and the vertices of the faces within
   /// this many face rings of it (1: Catmull-Clark's 2k + 1, Loop's k + 1).
   int rings = 1;
@@ -47,13 +50,15 @@ struct LocalSubdivisionMatrix {
 inline int ring_mesh_size(int rings) { return rings + 2; }
 
 /// The matrix of `scheme` at `configuration` over a neighbourhood of `rings`
-/// face rings. Throws InvalidInputError for schemes or configurations the
-/// ring layout does not cover.
-LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings);
+/// face rings, refined under `rules` (boundary rules, flatness; its level
+/// count is ignored). Throws InvalidInputError for schemes or configurations
+/// the ring layout does not cover.
+LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings,
+                                                const RefineOptions& rules = {});
 
 /// The smallest neighbourhood (1 .. max_rings face rings) that is invariant,
 /// or the largest tried, not invariant, when none is.
 LocalSubdivisionMatrix invariant_subdivision_matrix(const Scheme& scheme, const Configuration& configuration,
-                                                    int max_rings = 4);
+                                                    int max_rings = 4, const RefineOptions& rules = {});
 
 }  // namespace subdiv

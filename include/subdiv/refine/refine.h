@@ -15,8 +15,39 @@
 
 namespace subdiv {
 
+/// Which rules apply next to boundaries, creases and corners.
+enum class BoundaryRules {
+  /// The curve rules on sharp edges and vertices, the smooth rules
+  /// elsewhere: OpenSubdiv's rules.
+  standard,
+  /// Biermann, Levin and Zorin 2000: in addition, the edge points of smooth
+  /// edges next to crease, boundary and corner vertices weight their ends
+  /// with gamma(theta_k), and concave corners get the flatness modification
+  /// (refine/piecewise_smooth.h).
+  piecewise_smooth,
+};
+
+/// Where the angle alpha of a corner's sectors comes from, for the
+/// piecewise-smooth rules, when its tag gives none.
+enum class CornerAngles {
+  /// pi/2 at convex (and untyped) boundary corners, 3 pi/2 at concave ones.
+  fixed,
+  /// The angle between the corner's two boundary edges in the control mesh
+  /// (2 pi minus it at concave corners).
+  measured,
+};
+
+const char* to_string(BoundaryRules);
+const char* to_string(CornerAngles);
+
 struct RefineOptions {
   int levels = 1;
+  BoundaryRules boundary_rules = BoundaryRules::standard;
+  CornerAngles corner_angles = CornerAngles::fixed;
+  /// The flatness parameter s at concave corners (piecewise-smooth rules):
+  /// unset for the default s = 1 - (1/4) / lambda_3, 0 to switch the
+  /// modification off.
+  std::optional<double> flatness;
   /// Overrides the mesh's `interpolateboundary` tag; `none` is not supported.
   std::optional<BoundaryInterpolation> boundary;
   /// Refine meshes with non-manifold edges or vertices (and inconsistently

@@ -7,5 +7,7 @@
 namespace subdiv {
 
 const Scheme& catmull_clark_scheme();
+/// The piecewise-smooth edge weight gamma(theta) = 3/8 - 1/4 cos(theta).
+double catmull_clark_gamma(double theta);
 
 }  // namespace subdiv

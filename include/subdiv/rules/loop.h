@@ -10,6 +10,8 @@ namespace subdiv {
 double loop_beta(int valence);
 /// beta(k) = 3/(8k) for k > 3 and 3/16 for k = 3: Warren's simplification.
 double loop_warren_beta(int valence);
+/// The piecewise-smooth edge weight gamma(theta) = 1/2 - 1/4 cos(theta).
+double loop_gamma(double theta);
 
 const Scheme& loop_scheme();
 const Scheme& loop_warren_scheme();

@@ -42,6 +42,12 @@ struct LevelView {
   const MeshTopology& topology;
   std::span<const double> edge_sharpness;
   double sharp_above = 0.0;
+  /// Piecewise-smooth rules only (empty otherwise): per vertex, the angle
+  /// alpha each of its sectors spans (pi at crease and boundary vertices, the
+  /// corner's angle at corners), 0 where the vertex is smooth. Edge masks
+  /// next to such a vertex use theta_k = alpha / k, k the faces of the
+  /// sector (rules/rule_helpers.h: sector_theta).
+  std::span<const double> sector_angle = {};
 
   bool is_sharp(Index e) const {
     return !edge_sharpness.empty() && edge_sharpness[static_cast<std::size_t>(e)] > sharp_above;
