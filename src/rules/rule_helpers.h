@@ -2,6 +2,8 @@
 // Small pieces shared by the rule files: the curve rules along sharp edges,
 // averages over faces.
 
+#include <cmath>
+
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv::detail {
@@ -80,9 +82,17 @@ inline double sector_theta(const LevelView& level, Index v, Index e) {
 /// shifts are averaged. `gamma` is the scheme's gamma(theta).
 template <typename Gamma>
 double piecewise_smooth_shift(const LevelView& level, Index e, Index a, Index b, Gamma gamma) {
+  // At the regular sector gamma is 3/8 up to the rounding of cos (cos(pi/3)
+  // is 0.5000000000000001): shifts that small are the regular case, made
+  // exact so that regular boundaries keep the standard rule bit for bit.
+  // The smallest genuine shift is 0.05 (Loop, k = 4).
+  auto shift_at = [&](double theta) {
+    if (theta <= 0.0) return 0.0;
+    const double shift = 0.375 - gamma(theta);
+    return std::fabs(shift) < 1e-12 ? 0.0 : shift;
+  };
   const double ta = sector_theta(level, a, e), tb = sector_theta(level, b, e);
-  const double shift_a = ta > 0.0 ? 0.375 - gamma(ta) : 0.0;
-  const double shift_b = tb > 0.0 ? 0.375 - gamma(tb) : 0.0;
+  const double shift_a = shift_at(ta), shift_b = shift_at(tb);
   if (ta > 0.0 && tb > 0.0) return 0.5 * (shift_a - shift_b);
   return shift_a - shift_b;
 }

@@ -152,6 +152,40 @@ run limit-loop-quads 1 limit "$meshes/cube.obj" -s loop -o "$work/loop_limit.obj
 run limit-loop 0 limit "$meshes/cube.obj" -s loop --triangulate -o "$work/loop_limit.obj"
 run limit-same-file 1 limit "$work/cube_in.obj" -o "$work/cube_in.obj" && stderr_one_line limit-same-file
 
+# Piecewise-smooth rules: an L of three quads with a concave corner at vertex 4.
+cat >"$work/l.obj" <<'OBJ'
+v 0 0 0
+v 1 0 0
+v 2 0 0
+v 0 1 0
+v 1 1 0
+v 2 1 0
+v 0 2 0
+v 1 2 0
+f 1 2 5 4
+f 2 3 6 5
+f 4 5 8 7
+OBJ
+cp "$work/l.obj" "$work/l_in.obj"
+run ps-refine 0 refine "$work/l_in.obj" -s catmull-clark -l 3 --boundary-rules piecewise-smooth --corner 4:concave \
+  -o "$work/l_ps.obj"
+run ps-standard 0 refine "$work/l_in.obj" -s catmull-clark -l 3 --corner 4:concave -o "$work/l_std.obj"
+cmp -s "$work/l_ps.obj" "$work/l_std.obj" && fail "piecewise-smooth refine: same output as standard" || pass
+cmp -s "$work/l.obj" "$work/l_in.obj" && pass || fail "refine --corner modified its input"
+run ps-measured 0 refine "$work/l_in.obj" -l 2 --boundary-rules piecewise-smooth --corner 4:concave \
+  --corner-angles measured --flatness 0.5 -o "$work/l_m.obj"
+for bad in "--corner 99:concave" "--corner 4:sideways" "--corner 4:concave:90" "--corner x" \
+           "--boundary-rules smooth" "--flatness 1.5" "--corner 4:convex:400"; do
+  # shellcheck disable=SC2086
+  run "refine $bad" 1 refine "$work/l_in.obj" -o "$work/l_bad.obj" $bad && stderr_one_line "refine $bad"
+done
+[ ! -e "$work/l_bad.obj" ] && pass || fail "refine wrote output after a bad rule option"
+run ps-analyze 0 analyze -s loop --boundary -k 4..9 --boundary-rules piecewise-smooth
+[ "$(grep -cE '^boundary k=[4-9] .* C1 ' "$work/out")" -eq 6 ] && pass || fail "analyze piecewise-smooth: not C1 for k = 4..9"
+run ps-analyze-corner 0 analyze -s catmull-clark --corner concave --angle 240 -k 2..4 --boundary-rules piecewise-smooth
+stdout_has ps-analyze-corner "concave corner k=3 alpha=240deg"
+run ps-limit 0 limit "$work/l_in.obj" -s catmull-clark --boundary-rules piecewise-smooth --normals -o "$work/l_limit.obj"
+
 # Every shared mesh: exit 0 or 1, never a crash, and a failure is one line.
 if [ -d "$shared" ]; then
   while IFS= read -r -d '' mesh; do

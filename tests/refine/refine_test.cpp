@@ -21,6 +21,12 @@ const Scheme& scheme(const char* name) {
   return *s;
 }
 
+RefineOptions levels(int n) {
+  RefineOptions o;
+  o.levels = n;
+  return o;
+}
+
 PolygonMesh creased_cube() {
   PolygonMesh m = test::cube();
   m.tags.creases = {{0, 1, 10.0}, {1, 2, 2.5}, {2, 6, 0.5}};
@@ -203,7 +209,7 @@ TEST(Refine, LevelsAreCompleteValidMeshes) {
   const PolygonMesh r = refine(spot, scheme("catmull-clark"), o);
   EXPECT_EQ(seen, 2);
   EXPECT_EQ(r.face_count(), 2928);  // 180 faces, 732 quads after one step, x4
-  EXPECT_EQ(refine(spot, scheme("catmull-clark"), RefineOptions{0, {}, false, 0, {}}).positions, spot.positions);
+  EXPECT_EQ(refine(spot, scheme("catmull-clark"), levels(0)).positions, spot.positions);
 }
 
 TEST(Refine, RejectsWhatItCannotRefine) {
@@ -227,7 +233,7 @@ TEST(Refine, RejectsWhatItCannotRefine) {
   PolygonMesh none = test::cube();
   none.tags.boundary_interpolation = BoundaryInterpolation::none;
   EXPECT_THROW(refine(none, scheme("catmull-clark")), InvalidInputError);
-  EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), RefineOptions{-1, {}, false, 0, {}}), InvalidInputError);
+  EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), levels(-1)), InvalidInputError);
 }
 
 }  // namespace

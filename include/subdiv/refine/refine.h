@@ -42,12 +42,6 @@ const char* to_string(CornerAngles);
 
 struct RefineOptions {
   int levels = 1;
-  BoundaryRules boundary_rules = BoundaryRules::standard;
-  CornerAngles corner_angles = CornerAngles::fixed;
-  /// The flatness parameter s at concave corners (piecewise-smooth rules):
-  /// unset for the default s = 1 - (1/4) / lambda_3, 0 to switch the
-  /// modification off.
-  std::optional<double> flatness;
   /// Overrides the mesh's `interpolateboundary` tag; `none` is not supported.
   std::optional<BoundaryInterpolation> boundary;
   /// Refine meshes with non-manifold edges or vertices (and inconsistently
@@ -58,6 +52,12 @@ struct RefineOptions {
   int threads = 0;
   /// Called after each level with its number (1-based) and the level's mesh.
   std::function<void(int level, const PolygonMesh& mesh)> on_level;
+  BoundaryRules boundary_rules = BoundaryRules::standard;
+  CornerAngles corner_angles = CornerAngles::fixed;
+  /// The flatness parameter s at concave corners (piecewise-smooth rules):
+  /// unset for the default s = 1 - (1/4) / lambda_3, 0 to switch the
+  /// modification off.
+  std::optional<double> flatness;
 };
 
 /// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined
