@@ -203,5 +203,24 @@ else
   echo "note: $shared not found; shared-mesh checks skipped"
 fi
 
+# depth: the bound, the costs, the trade-off and a verification that passes.
+run depth-cc 0 depth "$meshes/cube.obj" -s catmull-clark --eps 0.01 --verify &&
+  stdout_has depth-cc "depth for accuracy 0.01: 5" && stdout_has depth-cc "     5           6146           6144" &&
+  stdout_has depth-cc "verify: after 5 steps" && stdout_has depth-cc ": within"
+run depth-loop 0 depth "$meshes/tetrahedron.obj" -s loop --eps 0.01 --verify &&
+  stdout_has depth-loop "bound (paper (regular) + analysis (extraordinary))" && stdout_has depth-loop "depth 3 would not have been enough"
+run depth-doo-sabin 1 depth "$meshes/cube.obj" -s doo-sabin --eps 0.01 && stderr_one_line depth-doo-sabin &&
+  stderr_has depth-doo-sabin "doo-sabin: the scheme is not in the registry yet"
+run depth-bad-eps 1 depth "$meshes/cube.obj" -s loop --eps -1 && stderr_one_line depth-bad-eps
+run depth-bad-file 1 depth "$data/index_out_of_range.obj" -s catmull-clark --eps 0.1 && stderr_one_line depth-bad-file
+
+# adaptive: fewer faces than uniform refinement, a closed output.
+run adaptive-cc 0 adaptive "$meshes/spot_control_mesh.obj" -s catmull-clark --eps 0.004 -o "$work/spot_adaptive.obj" &&
+  stdout_has adaptive-cc "uniform refinement to the same accuracy"
+run adaptive-info 0 info "$work/spot_adaptive.obj" && stdout_has adaptive-info "(boundary 0, non-manifold 0)" &&
+  stdout_has adaptive-info "validation      ok"
+run adaptive-bad-out 1 adaptive "$meshes/cube.obj" -s catmull-clark --eps 0.01 -o "$work/out.xyz" &&
+  stderr_one_line adaptive-bad-out
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -21,5 +21,7 @@ Command add_refine_command(CLI::App& app);
 Command add_schemes_command(CLI::App& app);
 Command add_limit_command(CLI::App& app);
 Command add_analyze_command(CLI::App& app);
+Command add_depth_command(CLI::App& app);
+Command add_adaptive_command(CLI::App& app);
 
 }  // namespace subdiv::cli

@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
   const Command schemes = add_schemes_command(app);
   const Command limit = add_limit_command(app);
   const Command analyze = add_analyze_command(app);
+  const Command depth = add_depth_command(app);
+  const Command adaptive = add_adaptive_command(app);
 
   try {
     app.parse(argc, argv);
@@ -65,6 +67,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("schemes")) return schemes();
     if (app.got_subcommand("limit")) return limit();
     if (app.got_subcommand("analyze")) return analyze();
+    if (app.got_subcommand("depth")) return depth();
+    if (app.got_subcommand("adaptive")) return adaptive();
     print_error("no command given (run 'subdiv --help' for usage)");
     return kExitBadInput;
   } catch (const subdiv::Error& e) {

@@ -1,0 +1,55 @@
+#pragma once
+// Adaptive refinement to an accuracy: refine only where control vertices are
+// further than eps from their limit positions, and join the levels without
+// cracks ("A priori computation of the subdivision depth", section 3.1,
+// static and mobile vertices; docs/design.md, "Adaptive refinement").
+//
+// The output is a conforming mesh whose faces are faces of the uniform
+// levels (leaves of the face hierarchy) and, where a leaf meets finer
+// neighbours, a transition triangulation of the leaf. Every output vertex is
+// a vertex of some uniform level, at that level's position: its distance to
+// its limit is exactly what uniform refinement gives there.
+
+#include <cstdint>
+#include <vector>
+
+#include "subdiv/depth/depth.h"
+#include "subdiv/mesh/polygon_mesh.h"
+#include "subdiv/rules/scheme.h"
+
+namespace subdiv {
+
+struct AdaptiveOptions {
+  DepthOptions depth;
+  /// Deepest level refined; the refinement stops earlier once every leaf's
+  /// corners are within eps. Throws InvalidInputError if that takes more.
+  int max_level = 12;
+};
+
+/// Where an output vertex comes from: vertex `index` of uniform level `level`.
+struct AdaptiveVertexSource {
+  int level = 0;
+  Index index = 0;
+};
+
+struct AdaptiveResult {
+  PolygonMesh mesh;  ///< conforming; faces of the uniform levels and transition faces
+  std::vector<AdaptiveVertexSource> sources;  ///< one per output vertex
+  std::vector<double> distances;              ///< each output vertex's distance to its limit
+  /// Uniform steps after which every vertex is within eps (measured), and
+  /// the face count there: what adaptive refinement is compared with.
+  int uniform_depth = 0;
+  std::int64_t uniform_faces = 0;
+  int leaves_per_level_max = 0;  ///< deepest level with a leaf face
+  std::int64_t transition_faces = 0;  ///< output faces that are not uniform faces
+};
+
+/// Loop (the paper's four face cases, with a leaf met by finer neighbours
+/// split into 2, 3 or 4 triangles) and Catmull-Clark (a leaf met by finer
+/// neighbours is fanned from its face point: quads at corners whose two
+/// edges are split, triangles elsewhere). Any scheme in the registry works
+/// the same way by its split. Throws as refine() does.
+AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
+                               const AdaptiveOptions& options = {});
+
+}  // namespace subdiv

@@ -1,0 +1,210 @@
+// Which bound each scheme gets, and the rates the analysis gives where the
+// paper has none (docs/design.md, "Depth").
+
+#include "subdiv/depth/depth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+#include "subdiv/analysis/analyze.h"
+#include "subdiv/analysis/limit.h"
+#include "subdiv/core/error.h"
+#include "subdiv/depth/mesh_measures.h"
+#include "subdiv/mesh/topology.h"
+
+namespace subdiv {
+
+namespace {
+
+bool all_quads(const PolygonMesh& mesh) {
+  for (Index f = 0; f < mesh.face_count(); ++f)
+    if (mesh.face_size(f) != 4) return false;
+  return true;
+}
+
+// The faces a regular interior vertex has; a regular boundary vertex has half.
+int regular_faces(const Scheme& scheme) { return scheme.split == SplitRule::quad ? 4 : 6; }
+
+bool is_regular(const Scheme& scheme, const Configuration& c) {
+  const int regular = regular_faces(scheme);
+  return (c.kind == Configuration::Kind::interior && c.k == regular) ||
+         (c.kind == Configuration::Kind::boundary && c.k == regular / 2);
+}
+
+// Rate at which vertex-to-limit distances contract near a configuration. A
+// vertex's distance to its limit is a linear functional of the control
+// points that vanishes on the eigenvalue-1 component (the limit itself).
+// Near an extraordinary configuration the subdominant component survives,
+// so the rate is |lambda_1|. At the regular configuration the subdominant
+// eigenvectors are linear functions, which the regular limit functional
+// also annihilates, so the rate is the next eigenvalue, |lambda_3|
+// (1/4 for Loop and Catmull-Clark, as in the paper's regular bounds).
+double configuration_rate(const Scheme& scheme, const Configuration& c) {
+  AnalysisOptions options;
+  options.characteristic_map = false;
+  const ConfigurationAnalysis a = analyze(scheme, c, options);
+  const std::size_t index = is_regular(scheme, c) ? 3 : 1;
+  if (a.leading.size() <= index)
+    throw InvalidInputError(std::string(scheme.name) + ": no depth bound: the analysis of " + c.name() +
+                            " found no subdominant eigenvalue");
+  return std::abs(a.leading[index]);
+}
+
+// The configurations of the mesh's vertices, and the regular ones that
+// refinement creates everywhere.
+std::set<std::pair<int, int>> configurations_present(const PolygonMesh& mesh, const Scheme& scheme) {
+  const MeshTopology t(mesh);
+  const int regular = regular_faces(scheme);
+  std::set<std::pair<int, int>> present{{static_cast<int>(Configuration::Kind::interior), regular}};
+  bool has_boundary = false;
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    const int faces = t.vertex_face_count(v);
+    if (t.vertex_kind(v) == VertexKind::interior) {
+      present.insert({static_cast<int>(Configuration::Kind::interior), faces});
+    } else if (t.vertex_kind(v) == VertexKind::boundary) {
+      has_boundary = true;
+      // A boundary vertex with one face is a corner under every boundary rule
+      // that moves boundary vertices along the boundary curve.
+      present.insert(faces == 1 ? std::pair{static_cast<int>(Configuration::Kind::corner), 1}
+                                : std::pair{static_cast<int>(Configuration::Kind::boundary), faces});
+    }
+  }
+  if (has_boundary) present.insert({static_cast<int>(Configuration::Kind::boundary), regular / 2});
+  return present;
+}
+
+struct WorstRate {
+  double rate = 0.0;
+  std::string where;
+};
+
+// The slowest rate among the configurations present; `extraordinary_only`
+// leaves the regular ones out.
+WorstRate worst_rate(const PolygonMesh& mesh, const Scheme& scheme, bool extraordinary_only) {
+  WorstRate worst;
+  for (const auto& [kind, k] : configurations_present(mesh, scheme)) {
+    Configuration c;
+    c.kind = static_cast<Configuration::Kind>(kind);
+    c.k = k;
+    if (extraordinary_only && is_regular(scheme, c)) continue;
+    const double rate = configuration_rate(scheme, c);
+    if (rate > worst.rate || worst.where.empty()) worst = {rate, c.name()};
+  }
+  return worst;
+}
+
+LimitOptions limit_options(const DepthOptions& options) {
+  LimitOptions limit;
+  limit.normals = false;
+  limit.refine = options.refine;
+  limit.refine.on_level = nullptr;
+  return limit;
+}
+
+PolygonMesh refined(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options, int levels) {
+  if (levels == 0) return mesh;
+  RefineOptions steps = options.refine;
+  steps.levels = levels;
+  steps.on_level = nullptr;
+  return refine(mesh, scheme, steps);
+}
+
+int max_valence(const PolygonMesh& mesh) {
+  const MeshTopology t(mesh);
+  int worst = 0;
+  for (Index v = 0; v < t.vertex_count(); ++v) worst = std::max(worst, static_cast<int>(t.valence(v)));
+  return worst;
+}
+
+}  // namespace
+
+DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
+  // Quad-split schemes on a mesh with other faces: the bound starts after
+  // the first step, which makes every face a quad (as the paper does for
+  // Doo-Sabin and the survey for Catmull-Clark).
+  const int start = scheme.split == SplitRule::quad && !all_quads(mesh) ? 1 : 0;
+  const PolygonMesh first = refined(mesh, scheme, options, start);
+  const LimitDistances distances = limit_distances(first, scheme, limit_options(options));
+
+  // The paper's bounds cover regular vertices (Catmull-Clark) or only the
+  // vertices that already exist (Loop: the proof of Theorem 3 follows a
+  // vertex point, never a new edge point). Near an extraordinary vertex the
+  // distances of the new vertices decay like |lambda_1| there, slower than
+  // the paper's rate: measured, the paper's Loop bound fails on meshes with
+  // valence 8 or 32 (docs/design.md, "Depth"). That term is added.
+  const bool paper_scheme = scheme.name == "loop" || scheme.name == "catmull-clark";
+  if (paper_scheme) {
+    DepthBound bound = scheme.name == "loop" ? loop_paper_bound(distances.max, max_valence(first))
+                                             : cheng_catmull_clark_bound(max_second_difference(first), start);
+    const WorstRate extraordinary = worst_rate(first, scheme, true);
+    if (!extraordinary.where.empty()) {
+      bound.source = "paper (regular) + analysis (extraordinary)";
+      bound.terms.push_back({"largest control-vertex-to-limit distance, contracted by |lambda_1| at " +
+                                 extraordinary.where + " (analysis)",
+                             distances.max, extraordinary.rate});
+    }
+    return bound;
+  }
+
+  const WorstRate worst = worst_rate(first, scheme, false);
+  return {std::string(scheme.name),
+          "analysis",
+          start,
+          {{"largest control-vertex-to-limit distance, contracted by the slowest rate, at " + worst.where +
+                " (analysis)",
+            distances.max, worst.rate}}};
+}
+
+std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme, int levels) {
+  const MeshTopology t(mesh);
+  LevelCost cost{0, mesh.vertex_count(), mesh.face_count(), t.edge_count(), mesh.corner_count(), 0};
+  std::vector<LevelCost> out;
+  for (int level = 0; level <= levels; ++level) {
+    cost.level = level;
+    cost.bytes = 24 * cost.vertices + 4 * (cost.corners + cost.faces + 1);
+    out.push_back(cost);
+    LevelCost next = cost;
+    if (scheme.split == SplitRule::quad) {
+      // A face of c corners becomes c quads around its face point; an edge
+      // becomes two plus one per face side (face point to edge point).
+      next.vertices = cost.vertices + cost.edges + cost.faces;
+      next.faces = cost.corners;
+      next.edges = 2 * cost.edges + cost.corners;
+      next.corners = 4 * cost.corners;
+    } else {
+      // A triangle becomes four; an edge two, plus three inside each face.
+      next.vertices = cost.vertices + cost.edges;
+      next.faces = 4 * cost.faces;
+      next.edges = 2 * cost.edges + 3 * cost.faces;
+      next.corners = 12 * cost.faces;
+    }
+    cost = next;
+  }
+  return out;
+}
+
+DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const DepthBound& bound, int depth,
+                       const DepthOptions& options) {
+  DepthCheck check;
+  check.depth = depth;
+  check.bound = bound.at(depth);
+  const LimitOptions limit = limit_options(options);
+  if (depth > 0) {
+    const PolygonMesh previous = refined(mesh, scheme, options, depth - 1);
+    check.has_previous = true;
+    check.measured_previous = limit_distances(previous, scheme, limit).max;
+    const LimitDistances at_depth = limit_distances(refined(previous, scheme, options, 1), scheme, limit);
+    check.measured = at_depth.max;
+    check.approximated = at_depth.approximated;
+  } else {
+    const LimitDistances at_depth = limit_distances(mesh, scheme, limit);
+    check.measured = at_depth.max;
+    check.approximated = at_depth.approximated;
+  }
+  return check;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,77 @@
+// The paper's bounds, with the formulas re-derived where the extracted text
+// is garbled (docs/design.md, "Depth", has the derivations).
+
+#include "subdiv/depth/depth_bound.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "subdiv/core/error.h"
+#include "subdiv/rules/loop.h"
+
+namespace subdiv {
+
+namespace {
+
+// No sensible input needs more; a larger answer means a rate close to 1.
+constexpr int kMaxDepth = 64;
+
+}  // namespace
+
+double DepthBound::at(int level) const {
+  if (level < start) return std::numeric_limits<double>::infinity();
+  double worst = 0.0;
+  for (const DepthTerm& term : terms)
+    worst = std::max(worst, term.amplitude * std::pow(term.rate, level - start));
+  return worst;
+}
+
+int DepthBound::depth_for(double eps) const {
+  if (!(eps > 0.0) || !std::isfinite(eps)) throw InvalidInputError("accuracy must be a positive number");
+  for (const DepthTerm& term : terms)
+    if (!(term.rate >= 0.0 && term.rate < 1.0) || !std::isfinite(term.amplitude))
+      throw InvalidInputError(scheme + ": no depth bound: " + term.what + " does not contract (rate " +
+                              std::to_string(term.rate) + ")");
+  for (int level = start; level <= start + kMaxDepth; ++level)
+    if (at(level) <= eps) return level;
+  throw InvalidInputError(scheme + ": more than " + std::to_string(kMaxDepth) + " steps needed for accuracy " +
+                          std::to_string(eps));
+}
+
+double loop_contraction(int valence) {
+  // Paper, proof of Theorem 3: n P' - sum of the new neighbours
+  // = (5/8 - n beta)(n P - sum of the old neighbours) for the vertex point
+  // P' and the edge points around it.
+  return 5.0 / 8.0 - valence * loop_beta(valence);
+}
+
+DepthBound loop_paper_bound(double max_limit_distance, int max_valence) {
+  // Refinement creates valence-6 vertices, so n is at least 6 (paper,
+  // discussion of Figure 12); 5/8 - n beta grows with n.
+  const int n = std::max(6, max_valence);
+  return {"loop",
+          "paper",
+          0,
+          {{"largest control-vertex-to-limit distance, contracted by 5/8 - n beta at n = " + std::to_string(n) +
+                " (paper, Theorem 3)",
+            max_limit_distance, loop_contraction(n)}}};
+}
+
+DepthBound cheng_catmull_clark_bound(double max_second_difference, int start) {
+  return {"catmull-clark",
+          "paper",
+          start,
+          {{"(1/3) x largest second difference, contracted by 1/4 (Cheng; paper, Theorem 2)",
+            max_second_difference / 3.0, 0.25}}};
+}
+
+DepthBound doo_sabin_bound(double max_second_difference_after_first_step) {
+  return {"doo-sabin",
+          "paper",
+          1,
+          {{"(1/4) x largest second difference after the first step, contracted by 1/4 (paper, Theorem 5)",
+            max_second_difference_after_first_step / 4.0, 0.25}}};
+}
+
+}  // namespace subdiv

@@ -1,0 +1,118 @@
+// subdiv depth IN -s SCHEME --eps E [--verify]: how many uniform steps bring
+// the control mesh within E of the limit surface, what each level up to that
+// depth costs, the accuracy/depth trade-off, and (--verify) a refinement that
+// measures how tight the bound is.
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "commands.h"
+#include "scheme_option.h"
+#include "subdiv/core/error.h"
+#include "subdiv/depth/depth.h"
+#include "subdiv/io/mesh_io.h"
+#include "subdiv/mesh/triangulate.h"
+#include "output_checks.h"
+
+namespace subdiv::cli {
+
+namespace {
+
+struct DepthCommandOptions {
+  std::string input;
+  std::string scheme = "loop";
+  double eps = 0.0;
+  bool verify = false;
+  bool triangulate = false;
+  bool allow_non_manifold = false;
+};
+
+const Scheme& depth_scheme(const std::string& name) {
+  if (name == "doo-sabin" && find_scheme(name) == nullptr)
+    throw InvalidInputError(
+        "doo-sabin: the scheme is not in the registry yet, so its first step cannot be computed; its bound "
+        "(doo_sabin_bound in subdiv/depth/depth_bound.h) applies to the mesh after that step");
+  return scheme_named(name);
+}
+
+void print_bound(const DepthBound& bound, double eps) {
+  std::printf("bound (%s): distance to the limit after k >= %d steps <= max of\n", bound.source.c_str(), bound.start);
+  for (const DepthTerm& term : bound.terms) {
+    const DepthBound alone{bound.scheme, bound.source, bound.start, {term}};
+    std::printf("  %.6g x %.6g^(k - %d)   (alone: depth %d)   %s\n", term.amplitude, term.rate, bound.start,
+                alone.depth_for(eps), term.what.c_str());
+  }
+}
+
+void print_costs(const std::vector<LevelCost>& costs) {
+  std::printf("\n%6s %14s %14s %16s\n", "level", "vertices", "faces", "bytes");
+  for (const LevelCost& c : costs)
+    std::printf("%6d %14lld %14lld %16lld\n", c.level, static_cast<long long>(c.vertices),
+                static_cast<long long>(c.faces), static_cast<long long>(c.bytes));
+}
+
+void print_trade_off(const DepthBound& bound, double eps) {
+  std::printf("\n%12s %6s\n", "accuracy", "depth");
+  for (const double divisor : {1.0, 2.0, 10.0, 100.0, 1000.0})
+    std::printf("%12.6g %6d\n", eps / divisor, bound.depth_for(eps / divisor));
+}
+
+int run_depth(const DepthCommandOptions& opt) {
+  const Scheme& scheme = depth_scheme(opt.scheme);
+  MeshFile file = read_mesh(opt.input);
+  print_warnings(opt.input, file.warnings);
+  if (opt.triangulate && scheme.needs_triangles) file.mesh = triangulate(file.mesh);
+
+  DepthOptions options;
+  options.refine.allow_non_manifold = opt.allow_non_manifold;
+  const DepthBound bound = depth_bound(file.mesh, scheme, options);
+  const int depth = bound.depth_for(opt.eps);
+
+  std::printf("%s: %d vertices, %d faces, scheme %s\n", opt.input.c_str(), file.mesh.vertex_count(),
+              file.mesh.face_count(), std::string(scheme.name).c_str());
+  print_bound(bound, opt.eps);
+  std::printf("\ndepth for accuracy %g: %d (bound there: %.6g)\n", opt.eps, depth, bound.at(depth));
+  print_costs(level_costs(file.mesh, scheme, depth));
+  print_trade_off(bound, opt.eps);
+
+  if (opt.verify) {
+    const DepthCheck check = check_depth(file.mesh, scheme, bound, depth, options);
+    std::printf("\nverify: after %d steps the largest vertex-to-limit distance is %.6g (bound %.6g, accuracy %g): %s\n",
+                depth, check.measured, check.bound, opt.eps, check.measured <= opt.eps ? "within" : "NOT within");
+    if (check.has_previous)
+      std::printf("verify: after %d steps it is %.6g: depth %d %s\n", depth - 1, check.measured_previous, depth - 1,
+                  check.measured_previous <= opt.eps ? "would already have been enough (the bound is not tight)"
+                                                     : "would not have been enough (the bound is tight)");
+    if (check.approximated > 0)
+      std::fprintf(stderr, "subdiv: warning: %d vertices match no canonical configuration: their limit is approximated\n",
+                   check.approximated);
+    if (check.measured > opt.eps) return kExitInternal;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_depth_command(CLI::App& app) {
+  auto opt = std::make_shared<DepthCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("depth", "Uniform steps needed to come within an accuracy of the limit surface");
+  cmd->add_option("input", opt->input, "Mesh (.obj, .ply or .off)")->required();
+  cmd->add_option("-s,--scheme", opt->scheme, "Scheme: loop, catmull-clark, doo-sabin or any in 'subdiv schemes'")
+      ->capture_default_str();
+  cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of a control vertex to the limit surface")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--verify", opt->verify, "Refine to the depth and measure the distances (exit 2 if one exceeds eps)");
+  cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
+  cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold, "Treat non-manifold elements as sharp");
+  cmd->footer(
+      "Loop and Catmull-Clark use the bounds of 'A priori computation of the subdivision depth'\n"
+      "(Catmull-Clark with a term for extraordinary vertices from the analysis); other schemes\n"
+      "a bound from their eigenvalues. Sizes are counted, not computed.\n"
+      "Example:\n"
+      "  subdiv depth data/meshes/cube.obj -s catmull-clark --eps 0.01 --verify");
+  return [opt] { return run_depth(*opt); };
+}
+
+}  // namespace subdiv::cli
