@@ -8,4 +8,8 @@ namespace subdiv {
 
 const Scheme& catmull_clark_scheme();
 
+/// The subdominant eigenvalue at an interior vertex of this valence
+/// (Halstead, Kass and DeRose 1993); 1/2 at valence 4.
+double catmull_clark_subdominant_eigenvalue(int valence);
+
 }  // namespace subdiv
