@@ -3,7 +3,9 @@
 # inspects each one, converts it to PLY and OFF, refines it with
 # Catmull-Clark (and the triangle meshes with Loop), and moves its vertices
 # to their limit positions; then analyses Loop and Catmull-Clark at valences
-# 3..8 with pictures. Results under out/.
+# 3..8 with pictures, refines the L-shaped patch with the standard and the
+# piecewise-smooth boundary rules, and refines Spot to an accuracy (a priori
+# depth, adaptive refinement). Results under out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -28,4 +30,14 @@ for scheme in loop catmull-clark; do
   "$subdiv" analyze -s "$scheme" -k 3..8 --plot-spectrum "out/${scheme}_spectrum.svg" \
     --plot-charmap 5 "out/${scheme}_charmap5.png"
 done
+echo "== the L's concave corner: standard and piecewise-smooth rules"
+"$subdiv" refine data/meshes/l_shape.obj -s catmull-clark -l 4 -o out/l_shape_standard4.obj
+"$subdiv" refine data/meshes/l_shape.obj -s catmull-clark -l 4 --boundary-rules piecewise-smooth \
+  -o out/l_shape_piecewise_smooth4.obj
+echo "== subdiv analyze -s catmull-clark --boundary -k 1..6 (standard, then piecewise-smooth rules)"
+"$subdiv" analyze -s catmull-clark --boundary -k 1..6
+"$subdiv" analyze -s catmull-clark --boundary -k 1..6 --boundary-rules piecewise-smooth
+echo "== a priori depth and adaptive refinement of Spot to 0.005"
+"$subdiv" depth data/meshes/spot_control_mesh.obj -s catmull-clark --eps 0.005 --verify
+"$subdiv" adaptive data/meshes/spot_control_mesh.obj -s catmull-clark --eps 0.005 -o out/spot_adaptive.obj
 echo "demo: results in out/"

@@ -25,6 +25,7 @@
 #include "subdiv/rules/catmull_clark.h"
 
 #include <cmath>
+#include <numbers>
 
 #include "rule_helpers.h"
 
@@ -56,16 +57,96 @@ void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder&
   for (const Index c : t.vertex_corners(v)) mask.add_face_point(t.corner_face(c), 1.0 / k2);
 }
 
+// Closed-form limit masks (faces are quads; face weights sit on each face's
+// vertex opposite the centre).
+
+// The subdominant eigenvalue at an interior vertex of valence k (Halstead,
+// Kass and DeRose 1993, appendix; OpenSubdiv's catmarkScheme.h):
+// (5 + cos(2 pi/k) + cos(pi/k) sqrt(2 (9 + cos(2 pi/k)))) / 16 = (A_k + 4) / 16.
+double subdominant_eigenvalue(int k) {
+  const double c = std::cos(2.0 * std::numbers::pi / k);
+  return (5.0 + c + std::cos(std::numbers::pi / k) * std::sqrt(2.0 * (9.0 + c))) / 16.0;
+}
+
+// Interior (smooth, dart): position k^2 : 4 : 1 over k (k + 5) on centre,
+// edge and face neighbours (survey, section 2.2; OpenSubdiv's
+// assignSmoothLimitMask). Tangents: Halstead, Kass and DeRose, "Efficient,
+// fair interpolation using Catmull-Clark surfaces", SIGGRAPH 1993: edge
+// weights A_k cos(2 pi i/k), face weights cos(2 pi i/k) + cos(2 pi (i+1)/k),
+// A_k = 1 + cos(2 pi/k) + cos(pi/k) sqrt(2 (9 + cos(2 pi/k))); sines for the
+// second. OpenSubdiv's masks are these times 4 / A_k.
+bool smooth_limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
+  const int k = n.faces;
+  if (k < 3 || n.edges != k) return false;
+  for (LimitMask* mask : {&m.position, &m.tangent1, &m.tangent2}) mask->reset(k, k);
+  const double denominator = k * (k + 5.0);
+  m.position.vertex = k * k / denominator;
+  const double a = 16.0 * subdominant_eigenvalue(k) - 4.0;
+  for (int i = 0; i < k; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    const double t0 = 2.0 * std::numbers::pi * i / k, t1 = 2.0 * std::numbers::pi * (i + 1) / k;
+    m.position.edges[ii] = 4.0 / denominator;
+    m.position.faces[ii] = 1.0 / denominator;
+    m.tangent1.edges[ii] = a * std::cos(t0);
+    m.tangent1.faces[ii] = std::cos(t0) + std::cos(t1);
+    m.tangent2.edges[ii] = a * std::sin(t0);
+    m.tangent2.faces[ii] = std::sin(t0) + std::sin(t1);
+  }
+  return true;
+}
+
+// The cross tangent of a crease sector of k faces. k = 1: towards the two
+// edge neighbours; k = 2 (regular): the bicubic B-spline's cross derivative
+// (OpenSubdiv's assignCreaseLimitTangentMasks, times 6). k >= 3: the left
+// eigenvector for mu = lambda(2k), derived in rule_helpers.h: interior
+// weights are the sine mask of Halstead et al. at valence 2k (edges
+// A sin(pi i/k), faces sin(pi j/k) + sin(pi (j+1)/k)); the curve coupling
+// l_i X has x_v = cot(pi/2k) (3A/8 + 1/2) = cot(pi/2k) (6 mu - 1) and
+// x_a = x_b = sin(pi/k) (A/16 + 1/4) = mu sin(pi/k), from the edge rule
+// e_i' = 3/8 (v + e_i) + 1/16 (e_i-1 + e_i+1 + f_i-1 + f_i) and the face
+// rule f_j' = (v + e_j + f_j + e_j+1) / 4. OpenSubdiv uses Biermann et al.'s
+// mask instead, which belongs to their modified boundary rules: for k >= 3
+// it is not a tangent of these rules' limit surface.
+void crease_cross_tangent(const VertexNeighbourhood& n, LimitMask& t) {
+  const int k = n.sector_faces();
+  if (k == 1) return detail::single_face_cross_tangent(n, t);
+  if (k == 2) {
+    t.vertex = -4.0;
+    t.edges[detail::sector_edge(n, 0)] = t.edges[detail::sector_edge(n, 2)] = -1.0;
+    t.edges[detail::sector_edge(n, 1)] = 4.0;
+    t.faces[detail::sector_face(n, 0)] = t.faces[detail::sector_face(n, 1)] = 1.0;
+    return;
+  }
+  const double mu = subdominant_eigenvalue(2 * k), a = 16.0 * mu - 4.0, angle = std::numbers::pi / k;
+  for (int i = 1; i < k; ++i) t.edges[detail::sector_edge(n, i)] = a * std::sin(i * angle);
+  for (int j = 0; j < k; ++j) t.faces[detail::sector_face(n, j)] = std::sin(j * angle) + std::sin((j + 1) * angle);
+  detail::add_cross_tangent_curve_weights(n, mu, detail::sine_sum(k) * (6.0 * mu - 1.0), mu * std::sin(angle), t);
+}
+
+bool limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
+  switch (n.rule) {
+    case VertexRule::smooth:
+    case VertexRule::dart: return smooth_limit_masks(n, m);  // darts: the smooth masks, as OpenSubdiv
+    case VertexRule::crease:
+      detail::crease_limit_masks(n, m, n.faces);
+      crease_cross_tangent(n, m.tangent2);
+      return true;
+    case VertexRule::corner: detail::corner_limit_masks(n, m, n.faces); return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 double catmull_clark_gamma(double theta) { return 0.375 - 0.25 * std::cos(theta); }
+double catmull_clark_subdominant_eigenvalue(int valence) { return subdominant_eigenvalue(valence); }
 
 const Scheme& catmull_clark_scheme() {
   static const Scheme scheme{
       "catmull-clark",
       "approximating, quad split, any polygon mesh; C2 bicubic B-spline on regular quads, C1 elsewhere",
       "E. Catmull, J. Clark: Recursively generated B-spline surfaces on arbitrary topological meshes, CAD 10(6), 1978",
-      SplitRule::quad, false, face_point, edge_point, vertex_point};
+      SplitRule::quad, false, face_point, edge_point, vertex_point, limit_masks};
   return scheme;
 }
 

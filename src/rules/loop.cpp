@@ -89,6 +89,69 @@ void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder&
   for (const Index e : t.vertex_edges(v)) mask.add(t.other_vertex(e, v), beta);
 }
 
+// Closed-form limit masks (triangles: no face weights).
+
+// Interior (smooth, dart): the limit weight chi = 8 beta / (3 + 8 k beta)
+// on each neighbour, 1 - k chi on the centre (survey, section 2.2, written
+// there as 1 / (3 / (8 beta) + k); OpenSubdiv's assignSmoothLimitMask), and
+// the tangents sum cos(2 pi i/k) p_i, sum sin(2 pi i/k) p_i (the left
+// eigenvectors of the subdominant eigenvalue 3/8 + 1/4 cos(2 pi/k), which
+// do not depend on beta).
+template <double (*beta_of)(int)>
+bool smooth_limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
+  const int k = n.edges;
+  if (k < 3 || n.faces != k) return false;
+  for (LimitMask* mask : {&m.position, &m.tangent1, &m.tangent2}) mask->reset(k, 0);
+  const double beta = beta_of(k);
+  const double chi = 8.0 * beta / (3.0 + 8.0 * k * beta);
+  m.position.vertex = 1.0 - k * chi;
+  for (int i = 0; i < k; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    const double angle = 2.0 * std::numbers::pi * i / k;
+    m.position.edges[ii] = chi;
+    m.tangent1.edges[ii] = std::cos(angle);
+    m.tangent2.edges[ii] = std::sin(angle);
+  }
+  return true;
+}
+
+// The cross tangent of a crease sector of k triangles. k = 1: towards the
+// two edge neighbours; k = 3 (regular): the box spline's (OpenSubdiv's
+// assignCreaseLimitTangentMasks over sqrt 3). Otherwise the left eigenvector
+// for mu = 3/8 + 1/4 cos(pi/k), derived in rule_helpers.h: interior weights
+// sin(pi i/k) (the sine mask at valence 2k), curve coupling from the edge
+// rule e_i' = 3/8 (v + e_i) + 1/8 (e_i-1 + e_i+1): x_v = 3/8 cot(pi/2k),
+// x_a = x_b = sin(pi/k) / 8. (k = 2 gives e_1 - v.) OpenSubdiv uses a mask
+// of the modified boundary rules (Biermann et al.) for k >= 4, which is not
+// a tangent of these rules' limit surface.
+void crease_cross_tangent(const VertexNeighbourhood& n, LimitMask& t) {
+  const int k = n.sector_faces();
+  if (k == 1) return detail::single_face_cross_tangent(n, t);
+  if (k == 3) {
+    t.vertex = -1.0;
+    t.edges[detail::sector_edge(n, 0)] = t.edges[detail::sector_edge(n, 3)] = -0.5;
+    t.edges[detail::sector_edge(n, 1)] = t.edges[detail::sector_edge(n, 2)] = 1.0;
+    return;
+  }
+  const double angle = std::numbers::pi / k, mu = 0.375 + 0.25 * std::cos(angle);
+  for (int i = 1; i < k; ++i) t.edges[detail::sector_edge(n, i)] = std::sin(i * angle);
+  detail::add_cross_tangent_curve_weights(n, mu, 0.375 * detail::sine_sum(k), std::sin(angle) / 8.0, t);
+}
+
+template <double (*beta_of)(int)>
+bool limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
+  switch (n.rule) {
+    case VertexRule::smooth:
+    case VertexRule::dart: return smooth_limit_masks<beta_of>(n, m);  // darts: the smooth masks, as OpenSubdiv
+    case VertexRule::crease:
+      detail::crease_limit_masks(n, m, 0);
+      crease_cross_tangent(n, m.tangent2);
+      return true;
+    case VertexRule::corner: detail::corner_limit_masks(n, m, 0); return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 const Scheme& loop_scheme() {
@@ -96,7 +159,8 @@ const Scheme& loop_scheme() {
       "loop",
       "approximating, triangle split, triangle meshes; C2 quartic box spline on regular meshes; Loop's beta",
       "C. Loop: Smooth subdivision surfaces based on triangles, MS thesis, University of Utah, 1987",
-      SplitRule::triangle, true, nullptr, edge_point, vertex_point<loop_beta>};
+      SplitRule::triangle, true, nullptr, edge_point, vertex_point<loop_beta>,
+      limit_masks<loop_beta>};
   return scheme;
 }
 
@@ -105,7 +169,8 @@ const Scheme& loop_warren_scheme() {
       "loop-warren",
       "Loop with Warren's beta = 3/(8k) (3/16 at k = 3)",
       "J. Warren: Subdivision methods for geometric design, 1995 (unpublished manuscript), after C. Loop 1987",
-      SplitRule::triangle, true, nullptr, edge_point, vertex_point<loop_warren_beta>};
+      SplitRule::triangle, true, nullptr, edge_point, vertex_point<loop_warren_beta>,
+      limit_masks<loop_warren_beta>};
   return scheme;
 }
 

@@ -3,6 +3,7 @@
 // averages over faces.
 
 #include <cmath>
+#include <numbers>
 
 #include "subdiv/rules/scheme.h"
 
@@ -103,5 +104,76 @@ inline void add_edge_midpoint(const LevelView& level, Index e, MaskBuilder& mask
   mask.add(a, 0.5);
   mask.add(b, 0.5);
 }
+
+// Closed-form limit masks shared by Catmull-Clark and Loop: both use the
+// cubic B-spline curve rules along sharp edges and keep corners.
+
+/// Ring position of the i-th edge (face) of the sector that starts at the
+/// neighbourhood's first sharp edge, wrapping around an interior ring.
+inline std::size_t sector_edge(const VertexNeighbourhood& n, int i) {
+  return static_cast<std::size_t>((n.sharp[0] + i) % n.edges);
+}
+inline std::size_t sector_face(const VertexNeighbourhood& n, int j) {
+  return static_cast<std::size_t>((n.sharp[0] + j) % n.faces);
+}
+
+/// Corner: the vertex stays (limit = control point); the tangents run along
+/// the two sharp edges bounding the sector. A curve whose end is kept and
+/// whose next point is the edge midpoint leaves the end along (e - v): the
+/// left eigenvector of eigenvalue 1/2 of its end matrix is (-1, 1, 0).
+inline void corner_limit_masks(const VertexNeighbourhood& n, LimitMasks& m, int face_weights) {
+  for (LimitMask* mask : {&m.position, &m.tangent1, &m.tangent2}) mask->reset(n.edges, face_weights);
+  m.position.vertex = 1.0;
+  m.tangent1.vertex = m.tangent2.vertex = -1.0;
+  m.tangent1.edges[static_cast<std::size_t>(n.sharp[0])] = 1.0;
+  m.tangent2.edges[static_cast<std::size_t>(n.sharp[1])] = 1.0;
+}
+
+/// Crease (and boundary) vertex: the limit of the cubic B-spline curve,
+/// 1/6, 2/3, 1/6 (survey, section 3.2; OpenSubdiv's assignCreaseLimitMask),
+/// and its derivative (e_a - e_b) / 2 along the curve, towards sharp[0].
+/// The cross tangent (tangent2) is the scheme's.
+inline void crease_limit_masks(const VertexNeighbourhood& n, LimitMasks& m, int face_weights) {
+  for (LimitMask* mask : {&m.position, &m.tangent1, &m.tangent2}) mask->reset(n.edges, face_weights);
+  const auto a = static_cast<std::size_t>(n.sharp[0]), b = static_cast<std::size_t>(n.sharp[1]);
+  m.position.vertex = 2.0 / 3.0;
+  m.position.edges[a] = m.position.edges[b] = 1.0 / 6.0;
+  m.tangent1.edges[a] = 0.5;
+  m.tangent1.edges[b] = -0.5;
+}
+
+/// A sector of a single face: the cross tangent towards the mean of the two
+/// edge neighbours (exact: OpenSubdiv's mask for this case, a left
+/// eigenvector of the local matrix, tested).
+inline void single_face_cross_tangent(const VertexNeighbourhood& n, LimitMask& t) {
+  t.vertex = -1.0;
+  t.edges[static_cast<std::size_t>(n.sharp[0])] = 0.5;
+  t.edges[static_cast<std::size_t>(n.sharp[1])] = 0.5;
+}
+
+/// The cross tangent of a crease sector with the plain curve rules, for the
+/// weights on the curve (vertex v, sharp edge neighbours a and b). Derived
+/// here: the local subdivision matrix of the sector is block triangular,
+///   [v a b]' = C [v a b],  interior' = X [v a b] + I interior,
+/// with C the curve rules (3/4 1/8 1/8; 1/2 1/2 0; 1/2 0 1/2). A left
+/// eigenvector (l_c, l_i) for mu has l_i I = mu l_i and
+/// l_c (mu - C) = l_i X =: (x_v, x_a, x_b); with x_a = x_b this solves to
+///   l_v = (x_v (mu - 1/2) + x_a) / ((mu - 1)(mu - 1/4)),
+///   l_a = l_b = (x_a + l_v / 8) / (mu - 1/2),
+/// valid for mu != 1/2 (the regular sector, where the eigenvalue is double,
+/// takes the B-spline's own mask). l_i and mu are the scheme's: the interior
+/// block is that of the odd modes of an interior vertex of valence 2k
+/// mirrored across the crease.
+inline void add_cross_tangent_curve_weights(const VertexNeighbourhood& n, double mu, double x_v, double x_a,
+                                            LimitMask& t) {
+  const double l_v = (x_v * (mu - 0.5) + x_a) / ((mu - 1.0) * (mu - 0.25));
+  const double l_a = (x_a + l_v / 8.0) / (mu - 0.5);
+  t.vertex = l_v;
+  t.edges[static_cast<std::size_t>(n.sharp[0])] = l_a;
+  t.edges[static_cast<std::size_t>(n.sharp[1])] = l_a;
+}
+
+/// sum_{i=1}^{k-1} sin(pi i / k) = cot(pi / (2k)).
+inline double sine_sum(int k) { return 1.0 / std::tan(std::numbers::pi / (2.0 * k)); }
 
 }  // namespace subdiv::detail

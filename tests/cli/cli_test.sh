@@ -141,7 +141,7 @@ leftovers=$(find "$work" -name '*.tmp-*' | wc -l)
 # limit: every vertex at its limit position, normals as vn lines; inputs untouched.
 cp "$meshes/cube.obj" "$work/cube_in.obj"
 run limit-cc 0 limit "$work/cube_in.obj" -s catmull-clark --normals -o "$work/cube_limit.obj" &&
-  stdout_has limit-cc "8 vertices at their catmull-clark limit positions, with limit normals"
+  stdout_has limit-cc "8 vertices at their catmull-clark limit positions (closed-form masks), with limit normals"
 [ "$(grep -c '^v ' "$work/cube_limit.obj")" -eq 8 ] && [ "$(grep -c '^vn ' "$work/cube_limit.obj")" -eq 8 ] && pass ||
   fail "limit: expected 8 v and 8 vn lines"
 # The unit cube's Catmull-Clark corner limit (n^2 v + 4 sum e + sum f) / (n (n + 5)), n = 3: (1/4, 1/4, 1/4) at the origin.
@@ -151,6 +151,27 @@ cmp -s "$meshes/cube.obj" "$work/cube_in.obj" && pass || fail "limit modified it
 run limit-loop-quads 1 limit "$meshes/cube.obj" -s loop -o "$work/loop_limit.obj" && stderr_one_line limit-loop-quads
 run limit-loop 0 limit "$meshes/cube.obj" -s loop --triangulate -o "$work/loop_limit.obj"
 run limit-same-file 1 limit "$work/cube_in.obj" -o "$work/cube_in.obj" && stderr_one_line limit-same-file
+# The generic masks give the same cube corner.
+run limit-generic 0 limit "$meshes/cube.obj" --masks generic -o "$work/cube_generic.obj" &&
+  stdout_has limit-generic "(generic masks)"
+awk '/^v /{ok = ($2 - 0.25)^2 + ($3 - 0.25)^2 + ($4 - 0.25)^2 < 1e-24; exit} END{exit !ok}' "$work/cube_generic.obj" &&
+  pass || fail "limit --masks generic: the first cube corner is not at (1/4, 1/4, 1/4)"
+# -l N: the refined mesh, every vertex at its limit, one vn per vertex.
+run limit-levels 0 limit "$meshes/cube.obj" -l 2 --normals -o "$work/cube_limit_l2.obj" &&
+  stdout_has limit-levels "98 vertices at their catmull-clark limit positions"
+[ "$(grep -c '^v ' "$work/cube_limit_l2.obj")" -eq 98 ] && [ "$(grep -c '^vn ' "$work/cube_limit_l2.obj")" -eq 98 ] &&
+  [ "$(grep -c '^f ' "$work/cube_limit_l2.obj")" -eq 96 ] && pass || fail "limit -l 2: expected 98 v, 98 vn and 96 f lines"
+# The limit masks are convex combinations: every limit point lies inside the
+# unit cube; and the cube's symmetry x -> 1 - x holds for the point set.
+awk '/^v /{for (i = 2; i <= 4; ++i) { if ($i <= 0 || $i >= 1) bad = 1; if (!n++ || $i < lo) lo = $i; if ($i > hi) hi = $i } }
+     END{exit bad || (lo + hi - 1)^2 > 1e-24}' "$work/cube_limit_l2.obj" &&
+  pass || fail "limit -l 2: a limit point outside the unit cube, or the set not symmetric"
+# Unit normals, pointing away from the cube's centre.
+paste <(grep '^v ' "$work/cube_limit_l2.obj") <(grep '^vn ' "$work/cube_limit_l2.obj") |
+  awk '{l = $6*$6 + $7*$7 + $8*$8; d = ($2-0.5)*$6 + ($3-0.5)*$7 + ($4-0.5)*$8; if ((l - 1)^2 > 1e-20 || d <= 0) bad = 1} END{exit bad}' &&
+  pass || fail "limit -l 2: normals not unit or not outward"
+run limit-bad-masks 1 limit "$meshes/cube.obj" --masks eigen -o "$work/x.obj" && stderr_one_line limit-bad-masks
+run limit-bad-levels 1 limit "$meshes/cube.obj" -l -1 -o "$work/x.obj" && stderr_one_line limit-bad-levels
 
 # Piecewise-smooth rules: an L of three quads with a concave corner at vertex 4.
 cat >"$work/l.obj" <<'OBJ'

@@ -1,7 +1,9 @@
-// subdiv limit IN -s SCHEME -o OUT: the mesh with every vertex moved to its
-// limit position under the scheme (and, with --normals, the limit normals),
-// through the masks the analysis reads off the scheme's rules.
+// subdiv limit IN -s SCHEME -o OUT [-l N]: the mesh (refined N levels first)
+// with every vertex moved to its limit position under the scheme (and, with
+// --normals, the limit normals), through the scheme's closed-form masks or
+// the masks the analysis reads off its rules.
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -13,6 +15,7 @@
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/triangulate.h"
+#include "subdiv/refine/refine.h"
 
 namespace subdiv::cli {
 
@@ -23,6 +26,8 @@ struct LimitCommandOptions {
   std::string output;
   std::string scheme = "catmull-clark";
   int isolation_levels = 2;
+  int levels = 0;
+  std::string masks = "closed-form";
   std::string boundary;
   bool normals = false;
   bool allow_non_manifold = false;
@@ -40,14 +45,21 @@ int run_limit(const LimitCommandOptions& opt) {
 
   LimitOptions options;
   apply_rule_options(opt.rules, file.mesh, options.refine);
+  options.route = opt.masks == "generic" ? LimitRoute::generic : LimitRoute::closed_form;
   options.isolation_levels = opt.isolation_levels;
   options.normals = opt.normals;
   options.refine.allow_non_manifold = opt.allow_non_manifold;
   if (opt.boundary == "edge-only") options.refine.boundary = BoundaryInterpolation::edge_only;
   else if (opt.boundary == "edge-and-corner") options.refine.boundary = BoundaryInterpolation::edge_and_corner;
-  const LimitResult limit = limit_positions(file.mesh, *scheme, options);
 
-  PolygonMesh out = file.mesh;
+  // The mesh whose vertices are written: the input, or its refinement.
+  PolygonMesh out = std::move(file.mesh);
+  if (opt.levels > 0) {
+    RefineOptions refine_options = options.refine;
+    refine_options.levels = opt.levels;
+    out = refine(out, *scheme, refine_options);
+  }
+  const LimitResult limit = limit_positions(out, *scheme, options);
   out.positions = limit.positions;
   if (opt.normals) {
     // One normal per vertex, as a face-varying channel indexed by vertex
@@ -64,9 +76,12 @@ int run_limit(const LimitCommandOptions& opt) {
     std::fprintf(stderr,
                  "subdiv: warning: %d vertices match no canonical configuration (darts, non-manifold or unresolved "
                  "semi-sharp features): written at their position after %d levels, not at the limit\n",
-                 limit.approximated, opt.isolation_levels);
-  std::printf("wrote %s: %d vertices at their %s limit positions%s\n", opt.output.c_str(), out.vertex_count(),
-              std::string(scheme->name).c_str(), opt.normals ? ", with limit normals" : "");
+                 limit.approximated, limit.levels_refined);
+  const bool closed = std::any_of(limit.sources.begin(), limit.sources.end(),
+                                  [](LimitSource s) { return s == LimitSource::closed_form; });
+  std::printf("wrote %s: %d vertices at their %s limit positions (%s masks)%s\n", opt.output.c_str(),
+              out.vertex_count(), std::string(scheme->name).c_str(), closed ? "closed-form" : "generic",
+              opt.normals ? ", with limit normals" : "");
   return kExitOk;
 }
 
@@ -78,8 +93,18 @@ Command add_limit_command(CLI::App& app) {
   cmd->add_option("input", opt->input, "Mesh (.obj, .ply or .off)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
   cmd->add_option("-s,--scheme", opt->scheme, "Scheme (see 'subdiv schemes')")->capture_default_str();
+  cmd->add_option("-l,--levels", opt->levels,
+                  "Refine this many levels first and write the refined mesh, every vertex at its limit")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 8));
+  cmd->add_option("--masks", opt->masks,
+                  "closed-form (catmull-clark, loop, loop-warren; other schemes use generic) or generic "
+                  "(eigenvectors of the local subdivision matrix)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"closed-form", "generic"}));
   cmd->add_option("--isolation-levels", opt->isolation_levels,
-                  "Refinement steps before the masks apply (makes faces uniform, separates extraordinary vertices)")
+                  "Generic masks: refinement steps before they apply (makes faces uniform, separates "
+                  "extraordinary vertices)")
       ->capture_default_str()
       ->check(CLI::Range(0, 6));
   cmd->add_option("--boundary", opt->boundary, "Boundary interpolation, overriding the file's tag")
@@ -90,10 +115,12 @@ Command add_limit_command(CLI::App& app) {
   add_rule_options(*cmd, opt->rules);
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
   cmd->footer(
-      "The masks are the left eigenvectors of the scheme's local subdivision matrices\n"
-      "(see 'subdiv analyze'), so this works for every scheme in the registry.\n"
-      "Example:\n"
-      "  subdiv limit data/meshes/spot_control_mesh.obj -s catmull-clark --normals -o /tmp/spot_limit.obj");
+      "Catmull-Clark and Loop use closed-form masks (refining only to resolve non-quads\n"
+      "and semi-sharp features); every other scheme, or --masks generic, uses the left\n"
+      "eigenvectors of the scheme's local subdivision matrices (see 'subdiv analyze').\n"
+      "Examples:\n"
+      "  subdiv limit data/meshes/spot_control_mesh.obj -s catmull-clark --normals -o /tmp/spot_limit.obj\n"
+      "  subdiv limit data/meshes/spot_control_mesh.obj -l 2 --normals -o /tmp/spot_limit_l2.obj");
   return [opt] { return run_limit(*opt); };
 }
 

@@ -1,22 +1,30 @@
 #pragma once
-// Limit positions and normals of a mesh's vertices for any scheme, through
-// the masks the analysis reads off the scheme's own rules: the left
-// eigenvectors of the local subdivision matrix (eigenvalue 1: the limit
-// position; the subdominant pair: two tangents). Masks are computed once
-// per configuration and cached.
+// Limit positions and normals of a mesh's vertices.
 //
-// A vertex's neighbourhood is matched to its configuration's canonical ring
-// (centre, then the ring counter-clockwise from the first edge, as the ring
-// mesh lays it out), so it must look like that ring: faces of the split's
-// kind (quads, triangles) around a smooth interior vertex, a boundary
-// vertex, or a corner. The mesh is first refined `isolation_levels` times,
-// which makes every face a quad (quad split) and separates extraordinary
-// vertices; a vertex's limit is the limit of its vertex point. A vertex on
-// an interior crease takes the boundary configuration's mask along the
-// crease (the crease and boundary rules are the same curve rules). Vertices
-// that match no canonical ring (darts, non-manifold vertices, semi-sharp
-// features not yet resolved) keep their refined position and are counted.
+// Two routes:
+// - Closed forms (Catmull-Clark, Loop, loop-warren: the scheme's
+//   `limit_masks`, rules/limit_mask.h): the mesh is refined just enough for
+//   the masks to apply (one level where a face has another size than the
+//   split's; ceil(s) levels for the largest finite sharpness s, so that
+//   semi-sharp edges and vertices have become smooth), at most
+//   `max_resolve_levels`; a vertex's limit is the limit of its vertex point.
+//   Vertices without a closed form there (valence below 3, semi-sharp
+//   features beyond the cap) take the generic masks when their neighbourhood
+//   matches a configuration, else keep their refined position.
+// - Generic masks, for every scheme: the left eigenvectors of the local
+//   subdivision matrix (eigenvalue 1: the limit position; the subdominant
+//   pair: two tangents), computed once per configuration by the analysis
+//   and cached, after `isolation_levels` refinement steps. A vertex's
+//   neighbourhood is matched to its configuration's canonical ring (centre,
+//   then the ring counter-clockwise from the first edge), so it must look
+//   like that ring: faces of the split's kind around a smooth interior
+//   vertex, a boundary vertex, or a corner. A vertex on an interior crease
+//   takes the boundary configuration's mask along the crease (the crease and
+//   boundary rules are the same curve rules). Vertices that match no
+//   canonical ring (darts, non-manifold vertices, semi-sharp features not yet
+//   resolved) keep their refined position and are counted.
 
+#include <cstdint>
 #include <vector>
 
 #include "subdiv/core/types.h"
@@ -25,24 +33,43 @@
 
 namespace subdiv {
 
+enum class LimitRoute : std::uint8_t {
+  closed_form,  ///< the scheme's closed forms where it has them, else generic
+  generic,      ///< the analysis's eigenvector masks
+};
+
 struct LimitOptions {
+  LimitRoute route = LimitRoute::closed_form;
+  /// Generic route: refinement steps before the masks apply.
   int isolation_levels = 2;
+  /// Closed-form route: most refinement steps taken to resolve faces and
+  /// semi-sharp features.
+  int max_resolve_levels = 4;
   bool normals = true;
   /// Boundary interpolation and non-manifold handling, as for refine().
   RefineOptions refine;
 };
 
+/// How a vertex's result was obtained.
+enum class LimitSource : std::uint8_t { closed_form, generic, refined_position };
+
 struct LimitResult {
   std::vector<Vec3> positions;  ///< one per input vertex
   std::vector<Vec3> normals;    ///< unit normals (empty unless asked; zero where undefined)
-  /// Vertices whose neighbourhood matched no canonical ring: their position
-  /// is the refined vertex point, not the limit.
+  /// Closed-form route, with normals asked: the two tangents per vertex
+  /// (tangent1 x tangent2 along the normal; lengths by each formula's
+  /// convention), zero where the vertex took another route.
+  std::vector<Vec3> tangents1, tangents2;
+  std::vector<LimitSource> sources;  ///< one per input vertex
+  /// Vertices left at their refined position (not the limit).
   Index approximated = 0;
+  int levels_refined = 0;  ///< refinement steps taken before the masks
 };
 
 /// Limit positions (and normals) of every vertex of `mesh` under `scheme`.
 /// Throws as refine() does for meshes it cannot refine, and
-/// InvalidInputError for a scheme whose masks need more than the one-ring.
+/// InvalidInputError for a scheme whose generic masks need more than the
+/// one-ring.
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options = {});
 
 }  // namespace subdiv

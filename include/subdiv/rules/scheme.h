@@ -13,6 +13,7 @@
 
 #include "subdiv/mesh/polygon_mesh.h"
 #include "subdiv/mesh/topology.h"
+#include "subdiv/rules/limit_mask.h"
 #include "subdiv/topology/split.h"
 
 namespace subdiv {
@@ -116,6 +117,9 @@ struct Scheme {
   FaceMask face_point = nullptr;  ///< quad split only
   EdgeMask edge_point = nullptr;
   VertexMask vertex_point = nullptr;
+  /// Closed-form limit masks for the scheme's standard rules, or nullptr:
+  /// limit positions then use the masks the analysis reads off the rules.
+  LimitMaskFunction limit_masks = nullptr;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.
