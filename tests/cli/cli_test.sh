@@ -138,6 +138,12 @@ run analyze-unknown 1 analyze -s butterfly-x && stderr_has analyze-unknown "unkn
 leftovers=$(find "$work" -name '*.tmp-*' | wc -l)
 [ "$leftovers" -eq 0 ] && pass || fail "analyze left temporary files behind"
 
+# Curve schemes: the survey's cubic B-spline example.
+run analyze-curve 0 analyze -s cubic-bspline && stdout_has analyze-curve "0.125000 0.125000" &&
+  stdout_has analyze-curve "limit mask: 0.166667 0.666667 0.166667" && stdout_has analyze-curve "verdict: C1"
+run analyze-curve-json 0 analyze -s four-point --json && stdout_has analyze-curve-json '"tangent_mask"'
+run analyze-curve-k 1 analyze -s chaikin -k 3 && stderr_one_line analyze-curve-k
+
 # limit: every vertex at its limit position, normals as vn lines; inputs untouched.
 cp "$meshes/cube.obj" "$work/cube_in.obj"
 run limit-cc 0 limit "$work/cube_in.obj" -s catmull-clark --normals -o "$work/cube_limit.obj" &&

@@ -152,4 +152,50 @@ std::string analysis_json(std::string_view scheme, const std::vector<Configurati
   return doc.dump(2) + "\n";
 }
 
+namespace {
+
+std::string format_vector(const Eigen::VectorXd& v) {
+  std::string out;
+  for (Eigen::Index i = 0; i < v.size(); ++i) out += fmt::format("{}{:.6g}", i ? " " : "", std::abs(v[i]) < 1e-12 ? 0.0 : v[i]);
+  return out;
+}
+
+std::vector<double> as_vector(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+}  // namespace
+
+std::string format_curve_analysis(std::string_view scheme, const CurveAnalysis& a) {
+  std::string out = fmt::format("scheme {} (curve)\n", scheme);
+  out += fmt::format("masks over {} points; eigenvalues over {}:", a.S.rows(), a.wide_S.rows());
+  for (const std::complex<double>& z : a.spectrum.expanded()) out += " " + format_complex(z);
+  out += "\n";
+  out += fmt::format("verdict: {} ({})\n", a.c1 ? "C1" : "inconclusive", a.reason);
+  if (a.leading.size() > 2 && a.c1) {
+    const double l1 = a.leading[1].real();
+    out += fmt::format("curvature: |lambda_2| = {:.6g} {} lambda_1^2 = {:.6g}\n", std::abs(a.leading[2]),
+                       std::abs(a.leading[2]) < l1 * l1 - 1e-12   ? "<"
+                       : std::abs(a.leading[2]) > l1 * l1 + 1e-12 ? ">"
+                                                                  : "=",
+                       l1 * l1);
+  }
+  if (a.limit_mask) out += "limit mask: " + format_vector(*a.limit_mask) + "\n";
+  if (a.tangent_mask) out += "tangent mask: " + format_vector(*a.tangent_mask) + "\n";
+  return out;
+}
+
+std::string curve_analysis_json(std::string_view scheme, const CurveAnalysis& a) {
+  nlohmann::json j;
+  j["scheme"] = std::string(scheme);
+  j["curve"] = true;
+  j["matrix_size"] = a.S.rows();
+  nlohmann::json values = nlohmann::json::array();
+  for (const std::complex<double>& z : a.spectrum.expanded()) values.push_back({{"re", z.real()}, {"im", z.imag()}});
+  j["eigenvalues"] = values;
+  j["verdict"] = a.c1 ? "C1" : "inconclusive";
+  j["reason"] = a.reason;
+  if (a.limit_mask) j["limit_mask"] = as_vector(*a.limit_mask);
+  if (a.tangent_mask) j["tangent_mask"] = as_vector(*a.tangent_mask);
+  return j.dump(2) + "\n";
+}
+
 }  // namespace subdiv::cli

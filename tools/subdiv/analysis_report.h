@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "subdiv/analysis/analyze.h"
+#include "subdiv/analysis/curve_analysis.h"
 
 namespace subdiv::cli {
 
@@ -22,5 +23,10 @@ std::string format_analysis_table(std::string_view scheme, const std::vector<Con
 /// The whole analysis as a JSON document (numbers at full precision),
 /// masks and neighbourhood layout included.
 std::string analysis_json(std::string_view scheme, const std::vector<ConfigurationAnalysis>& results);
+
+/// A curve scheme's analysis: the matrix size, the leading eigenvalues,
+/// the verdict, the masks; as text or JSON.
+std::string format_curve_analysis(std::string_view scheme, const CurveAnalysis& a);
+std::string curve_analysis_json(std::string_view scheme, const CurveAnalysis& a);
 
 }  // namespace subdiv::cli

@@ -122,7 +122,22 @@ CharacteristicMapPlot characteristic_map_plot(std::string_view scheme, const Con
   return plot;
 }
 
+// Curve schemes have one regular configuration: no k, no boundary rules.
+int run_curve_analysis(const CurveScheme& curve, const AnalyzeCommandOptions& opt) {
+  if (!opt.k.empty() || opt.boundary || !opt.corner.empty() || opt.angle_degrees || !opt.plot_spectrum.empty() ||
+      opt.plot_charmap_given || opt.boundary_rules != "standard" || opt.flatness)
+    throw InvalidInputError(std::string(curve.name) +
+                            " is a curve scheme: it has one regular configuration and no -k, --boundary, --corner, "
+                            "--angle, --boundary-rules, --flatness or plots");
+  const CurveAnalysis a = analyze_curve(curve);
+  const std::string text = opt.json ? curve_analysis_json(curve.name, a) : format_curve_analysis(curve.name, a);
+  std::fwrite(text.data(), 1, text.size(), stdout);
+  return kExitOk;
+}
+
 int run_analyze(const AnalyzeCommandOptions& opt) {
+  if (const CurveScheme* curve = find_curve_scheme(opt.scheme); curve && !find_scheme(opt.scheme))
+    return run_curve_analysis(*curve, opt);
   const Scheme* scheme = &scheme_named(opt.scheme);
 
   Configuration base;
@@ -249,6 +264,8 @@ Command add_analyze_command(CLI::App& app) {
       "Examples:\n"
       "  subdiv analyze -s loop -k 3..8\n"
       "  subdiv analyze -s catmull-clark --boundary -k 1..5 --json\n"
+      "  subdiv analyze -s loop --boundary -k 3..9 --boundary-rules piecewise-smooth\n"
+      "  subdiv analyze -s cubic-bspline    (curve schemes: cubic-bspline, chaikin, four-point)\n"
       "  subdiv analyze -s catmull-clark --plot-spectrum /tmp/cc.svg --plot-charmap 5 /tmp/cc5.png");
   return [opt, charmap] {
     opt->plot_charmap_given = charmap->count() > 0;
