@@ -87,7 +87,8 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
 
   const MeshTopology t(current);
   const BoundaryInterpolation boundary = options.refine.boundary.value_or(current.tags.boundary_interpolation);
-  const LevelCreasing creasing = compute_creasing(current, t, boundary);
+  const CreaseMethod method = options.refine.crease_method.value_or(current.tags.crease_method);
+  const LevelCreasing creasing = compute_creasing(current, t, boundary, method);
   const bool quads = scheme.split == SplitRule::quad;
   const Index face_size = quads ? 4 : 3;
   MaskCache cache(scheme);

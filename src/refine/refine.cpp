@@ -24,6 +24,10 @@ BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RefineOptions& 
   return options.boundary.value_or(mesh.tags.boundary_interpolation);
 }
 
+CreaseMethod crease_method_of(const PolygonMesh& mesh, const RefineOptions& options) {
+  return options.crease_method.value_or(mesh.tags.crease_method);
+}
+
 // What the masks of one level see: the parent and its creasing. The parent
 // mesh supplies positions, channels and tags; once its topology is derived
 // its face arrays are dropped (refine_levels): faces come from the topology.
@@ -31,24 +35,27 @@ struct ParentLevel {
   const PolygonMesh& mesh;
   const MeshTopology& topology;
   const LevelCreasing& creasing;
-  LevelView view() const { return {topology, creasing.edge_sharpness, 0.0}; }
-  LevelView child_view() const { return {topology, creasing.edge_sharpness, 1.0}; }  // one level down
+  // The masks' views, built once per level rather than per child vertex.
+  LevelView here{topology, creasing.edge_sharpness, 0.0};
+  LevelView below{topology, creasing.edge_sharpness, 1.0, creasing.child_edge_sharpness};  // Chaikin: per edge end
+  const LevelView& view() const { return here; }
+  const LevelView& child_view() const { return below; }  // one level down
 };
 
 // The mask of child vertex i: a face, edge or vertex point by its range, with
 // semi-sharp edges and rule transitions blending two masks (creasing.h).
 void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Index i, MaskBuilder& mask) {
   mask.clear();
-  const LevelView view = parent.view();
+  const LevelView& view = parent.view();
   if (i < map.edge_points) return scheme.face_point(view, i - map.face_points, mask);
   if (i < map.vertex_points) {
     const Index e = i - map.edge_points;
-    const double s = edge_sharpness_of(parent.creasing, e);
-    if (s <= 0.0) return scheme.edge_point(view, e, EdgeRule::smooth, mask);
-    if (s >= 1.0) return scheme.edge_point(view, e, EdgeRule::crease, mask);
-    mask.set_scale(1.0 - s);
+    if (edge_sharpness_of(parent.creasing, e) <= 0.0) return scheme.edge_point(view, e, EdgeRule::smooth, mask);
+    const double c = edge_crease_weight(parent.creasing, e);  // the crease rule's share: 1, or s
+    if (c == 1.0) return scheme.edge_point(view, e, EdgeRule::crease, mask);
+    mask.set_scale(1.0 - c);
     scheme.edge_point(view, e, EdgeRule::smooth, mask);
-    mask.set_scale(s);
+    mask.set_scale(c);
     return scheme.edge_point(view, e, EdgeRule::crease, mask);
   }
   const Index v = i - map.vertex_points;
@@ -95,10 +102,14 @@ struct Level {
 // its creasing for the masks.
 template <typename Fn>
 Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const Scheme& scheme,
-                  BoundaryInterpolation boundary, Fn&& fn) {
-  const LevelCreasing creasing = compute_creasing(parent, topology, boundary);
+                  BoundaryInterpolation boundary, CreaseMethod method, Fn&& fn) {
+  const LevelCreasing creasing = compute_creasing(parent, topology, boundary, method);
   Level level;
-  level.map = split_topology(parent, topology, scheme.split, level.child);
+  level.map = split_topology(parent, topology, scheme.split, level.child, creasing.child_edge_sharpness);
+  if (level.child.tags.crease_method != method) {  // overridden: the child's tags say how they were made
+    level.child.tags.crease_method = method;
+    level.child.tags.crease_method_set = true;
+  }
   fn(ParentLevel{parent, topology, creasing}, level);
   return level;
 }
@@ -278,10 +289,11 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
                    const SourceLines* lines) {
   MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  const CreaseMethod method = crease_method_of(mesh, options);
   PolygonMesh result;
   run_with_threads(options.threads, [&] {
     result = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& level) {
+      return refine_step(parent, topology, scheme, boundary, method, [&](const ParentLevel& view, Level& level) {
         evaluate_fast(parent, scheme, view, level);
       });
     });
@@ -293,10 +305,11 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
                                           PolygonMesh* final_level) {
   MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  const CreaseMethod method = crease_method_of(mesh, options);
   std::vector<StencilTable> tables;
   run_with_threads(options.threads, [&] {
     PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      Level level = refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
+      Level level = refine_step(parent, topology, scheme, boundary, method, [&](const ParentLevel& view, Level& lv) {
         tables.push_back(record_stencils(view, scheme, lv.map, nullptr));
       });
       if (final_level) tables.back().apply(parent.positions, level.child.positions);
@@ -310,10 +323,11 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
 StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
   MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  const CreaseMethod method = crease_method_of(mesh, options);
   std::optional<StencilTable> total;
   run_with_threads(options.threads, [&] {
     refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_step(parent, topology, scheme, boundary, [&](const ParentLevel& view, Level& lv) {
+      return refine_step(parent, topology, scheme, boundary, method, [&](const ParentLevel& view, Level& lv) {
         total = record_stencils(view, scheme, lv.map, total ? &*total : nullptr);
       });
     });

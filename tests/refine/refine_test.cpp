@@ -28,12 +28,22 @@ PolygonMesh creased_cube() {
   return m;
 }
 
+// The creased cube with Chaikin creasing: vertex 2 joins semi-sharp edges of
+// 2.5 and 0.5, so the halves of 1-2 and 2-6 differ one level down.
+PolygonMesh chaikin_creased_cube() {
+  PolygonMesh m = creased_cube();
+  m.tags.crease_method = CreaseMethod::chaikin;
+  m.tags.crease_method_set = true;
+  return m;
+}
+
 // Meshes that exercise every rule: smooth, boundary, corner, crease,
-// semi-sharp, n-gons and triangles.
+// semi-sharp (uniform and Chaikin creasing), n-gons and triangles.
 std::vector<std::pair<std::string, PolygonMesh>> quad_cases() {
   std::vector<std::pair<std::string, PolygonMesh>> out;
   out.emplace_back("cube", test::cube());
   out.emplace_back("creased cube", creased_cube());
+  out.emplace_back("chaikin creased cube", chaikin_creased_cube());
   out.emplace_back("grid", test::quad_grid(3, 2));
   out.emplace_back("spot", read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh);
   return out;
@@ -42,6 +52,7 @@ std::vector<std::pair<std::string, PolygonMesh>> triangle_cases() {
   std::vector<std::pair<std::string, PolygonMesh>> out;
   out.emplace_back("tetrahedron", test::tetrahedron());
   out.emplace_back("triangulated creased cube", triangulate(creased_cube()));
+  out.emplace_back("triangulated chaikin creased cube", triangulate(chaikin_creased_cube()));
   out.emplace_back("triangle grid", test::triangle_grid(3, 3));
   return out;
 }
@@ -203,7 +214,7 @@ TEST(Refine, LevelsAreCompleteValidMeshes) {
   const PolygonMesh r = refine(spot, scheme("catmull-clark"), o);
   EXPECT_EQ(seen, 2);
   EXPECT_EQ(r.face_count(), 2928);  // 180 faces, 732 quads after one step, x4
-  EXPECT_EQ(refine(spot, scheme("catmull-clark"), RefineOptions{0, {}, false, 0, {}}).positions, spot.positions);
+  EXPECT_EQ(refine(spot, scheme("catmull-clark"), RefineOptions{0, {}, false, 0, {}, {}}).positions, spot.positions);
 }
 
 TEST(Refine, RejectsWhatItCannotRefine) {
@@ -227,7 +238,7 @@ TEST(Refine, RejectsWhatItCannotRefine) {
   PolygonMesh none = test::cube();
   none.tags.boundary_interpolation = BoundaryInterpolation::none;
   EXPECT_THROW(refine(none, scheme("catmull-clark")), InvalidInputError);
-  EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), RefineOptions{-1, {}, false, 0, {}}), InvalidInputError);
+  EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), RefineOptions{-1, {}, false, 0, {}, {}}), InvalidInputError);
 }
 
 }  // namespace

@@ -27,6 +27,10 @@ struct RefineOptions {
   int threads = 0;
   /// Called after each level with its number (1-based) and the level's mesh.
   std::function<void(int level, const PolygonMesh& mesh)> on_level;
+  /// Overrides the mesh's `creasemethod` tag (uniform or Chaikin creasing of
+  /// semi-sharp edges; creasing.h). The refined levels' tags then name this
+  /// method, since their crease sharpness was subdivided by it.
+  std::optional<CreaseMethod> crease_method;
 };
 
 /// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined
