@@ -183,7 +183,8 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
 
   const MeshTopology t(current);
   const BoundaryInterpolation boundary = options.refine.boundary.value_or(current.tags.boundary_interpolation);
-  const LevelCreasing creasing = compute_creasing(current, t, boundary);
+  const CreaseMethod method = options.refine.crease_method.value_or(current.tags.crease_method);
+  const LevelCreasing creasing = compute_creasing(current, t, boundary, method);
   std::vector<char> semi_sharp_vertex(static_cast<std::size_t>(current.vertex_count()), 0);
   for (const CornerTag& c : current.tags.corners)
     if (c.sharpness > 0.0 && c.sharpness < kInfiniteSharpness) semi_sharp_vertex[static_cast<std::size_t>(c.vertex)] = 1;

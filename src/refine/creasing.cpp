@@ -15,6 +15,33 @@ double subdivide_sharpness(double s) {
   return s > 1.0 ? s - 1.0 : 0.0;
 }
 
+void subdivide_sharpness_around_vertex(CreaseMethod method, std::span<const double> parent, std::span<double> child) {
+  const std::size_t n = parent.size();
+  if (method == CreaseMethod::uniform || n < 2) {
+    for (std::size_t i = 0; i < n; ++i) child[i] = subdivide_sharpness(parent[i]);
+    return;
+  }
+  // Chaikin (Sdc::Crease): only semi-sharp edges enter the mean, in the same
+  // arithmetic as OpenSubdiv's (the sum minus the edge's own sharpness).
+  double sum = 0.0;
+  int semi_sharp = 0;
+  for (const double s : parent)
+    if (s > 0.0 && s < kInfiniteSharpness) {
+      sum += s;
+      ++semi_sharp;
+    }
+  for (std::size_t i = 0; i < n; ++i) {
+    const double s = parent[i];
+    if (s <= 0.0 || s >= kInfiniteSharpness || semi_sharp == 1) {
+      child[i] = subdivide_sharpness(s);
+    } else {
+      const double others = (sum - s) / static_cast<double>(semi_sharp - 1);
+      const double c = 0.75 * s + 0.25 * others - 1.0;
+      child[i] = c > 0.0 ? c : 0.0;
+    }
+  }
+}
+
 VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) {
   if (vertex_sharpness > 0.0) return VertexRule::corner;
   switch (sharp_edge_count) {
@@ -45,15 +72,36 @@ double effective_vertex_sharpness(const MeshTopology& topo, BoundaryInterpolatio
   return tagged;
 }
 
+// Where edge e's child at vertex v sits in LevelCreasing::child_edge_sharpness.
+std::size_t child_slot(const MeshTopology& topo, Index e, Index v) {
+  return 2 * static_cast<std::size_t>(e) + (topo.edge_vertices(e)[0] == v ? 0 : 1);
+}
+
+// Chaikin: the children at v of v's edges, written to their slots (each
+// slot belongs to one vertex, so vertices may run in parallel).
+void subdivide_edges_at_vertex(const MeshTopology& topo, Index v, std::vector<double>& parent,
+                               std::vector<double>& child, LevelCreasing& out) {
+  const auto edges = topo.vertex_edges(v);
+  parent.resize(edges.size());
+  child.resize(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) parent[i] = edge_sharpness_of(out, edges[i]);
+  subdivide_sharpness_around_vertex(CreaseMethod::chaikin, parent, child);
+  for (std::size_t i = 0; i < edges.size(); ++i) out.child_edge_sharpness[child_slot(topo, edges[i], v)] = child[i];
+}
+
 // The rules of vertex v now and one level down; true when they differ. One
-// level down an edge stays sharp when its sharpness exceeds 1.
+// level down an edge stays sharp at v when its child there is sharp: when its
+// sharpness exceeds 1 (uniform), or per child_edge_sharpness (Chaikin,
+// PerEnd; a template argument, so that the uniform loop stays as lean).
+template <bool PerEnd>
 bool classify_vertex(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double tagged,
                      LevelCreasing& out) {
   int sharp = 0, child_sharp = 0;
   for (const Index e : topo.vertex_edges(v)) {
     const double s = edge_sharpness_of(out, e);
     sharp += s > 0.0;
-    child_sharp += s > 1.0;
+    if constexpr (PerEnd) child_sharp += out.child_edge_sharpness[child_slot(topo, e, v)] > 0.0;
+    else child_sharp += s > 1.0;
   }
   const double vs = effective_vertex_sharpness(topo, boundary, v, tagged, out);
   const auto vi = static_cast<std::size_t>(v);
@@ -64,7 +112,8 @@ bool classify_vertex(const MeshTopology& topo, BoundaryInterpolation boundary, I
 
 // The weight of the parent's rule at a vertex whose rule changes
 // (Sdc::Crease::ComputeFractionalWeightAtVertex): the mean sharpness of
-// what stops being sharp, at most 1.
+// what stops being sharp at v, at most 1. With Chaikin creasing an edge of
+// sharpness above 1 can stop being sharp at v (its child there decays to 0).
 double parent_rule_weight_at(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double tagged,
                              const LevelCreasing& out) {
   const double vs = effective_vertex_sharpness(topo, boundary, v, tagged, out);
@@ -74,9 +123,11 @@ double parent_rule_weight_at(const MeshTopology& topo, BoundaryInterpolation bou
     ++transitions;
     sum += vs;
   }
+  const bool per_end = !out.child_edge_sharpness.empty();
   for (const Index e : topo.vertex_edges(v)) {
     const double s = edge_sharpness_of(out, e);
-    if (s > 0.0 && s <= 1.0) {  // sharp now, smooth one level down
+    const bool decays = per_end ? out.child_edge_sharpness[child_slot(topo, e, v)] <= 0.0 : s <= 1.0;
+    if (s > 0.0 && decays) {  // sharp now, smooth one level down
       ++transitions;
       sum += s;
     }
@@ -86,7 +137,8 @@ double parent_rule_weight_at(const MeshTopology& topo, BoundaryInterpolation bou
 
 }  // namespace
 
-LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo, BoundaryInterpolation boundary) {
+LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo, BoundaryInterpolation boundary,
+                               CreaseMethod method) {
   const auto ne = static_cast<std::size_t>(topo.edge_count());
   const auto nv = static_cast<std::size_t>(topo.vertex_count());
   LevelCreasing out;
@@ -113,15 +165,33 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
       vertex_sharpness[static_cast<std::size_t>(c.vertex)] = std::max(vertex_sharpness[static_cast<std::size_t>(c.vertex)], c.sharpness);
   auto tagged = [&](Index v) { return vertex_sharpness.empty() ? 0.0 : vertex_sharpness[static_cast<std::size_t>(v)]; };
 
+  // Chaikin's per-end child sharpness, only where it can differ from the
+  // uniform rule: some edge is semi-sharp.
+  const bool chaikin = method == CreaseMethod::chaikin && !out.edge_sharpness.empty() &&
+                       std::any_of(out.edge_sharpness.begin(), out.edge_sharpness.end(),
+                                   [](double s) { return s > 0.0 && s < kInfiniteSharpness; });
+  if (chaikin) detail::assign_large(out.child_edge_sharpness, 2 * ne, 0.0);
+
   detail::assign_large(out.vertex_rule, nv);
   detail::assign_large(out.child_vertex_rule, nv);
-  // Every vertex writes only its own entries: parallel loops. Blend weights
-  // are stored only when some vertex's rule changes (semi-sharp features).
+  // Every vertex writes only its own entries (its rules, its ends of its
+  // edges): parallel loops. Blend weights are stored only when some vertex's
+  // rule changes (semi-sharp features).
   std::atomic<bool> any_change = false;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, topo.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& r) {
-    for (Index v = r.begin(); v != r.end(); ++v)
-      if (classify_vertex(topo, boundary, v, tagged(v), out)) any_change = true;
-  });
+  if (chaikin) {
+    tbb::parallel_for(tbb::blocked_range<Index>(0, topo.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& r) {
+      std::vector<double> parent, child;  // per-vertex buffers
+      for (Index v = r.begin(); v != r.end(); ++v) {
+        subdivide_edges_at_vertex(topo, v, parent, child, out);
+        if (classify_vertex<true>(topo, boundary, v, tagged(v), out)) any_change = true;
+      }
+    });
+  } else {
+    tbb::parallel_for(tbb::blocked_range<Index>(0, topo.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& r) {
+      for (Index v = r.begin(); v != r.end(); ++v)
+        if (classify_vertex<false>(topo, boundary, v, tagged(v), out)) any_change = true;
+    });
+  }
   if (!any_change) return out;
   detail::assign_large(out.parent_rule_weight, nv, 1.0);
   tbb::parallel_for(tbb::blocked_range<Index>(0, topo.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& r) {

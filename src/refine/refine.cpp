@@ -25,6 +25,10 @@ BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RefineOptions& 
   return options.boundary.value_or(mesh.tags.boundary_interpolation);
 }
 
+CreaseMethod crease_method_of(const PolygonMesh& mesh, const RefineOptions& options) {
+  return options.crease_method.value_or(mesh.tags.crease_method);
+}
+
 // What the masks of one level see: the parent and its creasing. The parent
 // mesh supplies positions, channels and tags; once its topology is derived
 // its face arrays are dropped (refine_levels): faces come from the topology.
@@ -33,24 +37,27 @@ struct ParentLevel {
   const MeshTopology& topology;
   const LevelCreasing& creasing;
   std::span<const double> sector_angle;  ///< piecewise-smooth rules only
-  LevelView view() const { return {topology, creasing.edge_sharpness, 0.0, sector_angle}; }
-  LevelView child_view() const { return {topology, creasing.edge_sharpness, 1.0, sector_angle}; }  // one level down
+  // The masks' views, built once per level rather than per child vertex.
+  LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle};
+  LevelView below{topology, creasing.edge_sharpness, 1.0, sector_angle, creasing.child_edge_sharpness};  // Chaikin: per edge end
+  const LevelView& view() const { return here; }
+  const LevelView& child_view() const { return below; }  // one level down
 };
 
 // The mask of child vertex i: a face, edge or vertex point by its range, with
 // semi-sharp edges and rule transitions blending two masks (creasing.h).
 void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Index i, MaskBuilder& mask) {
   mask.clear();
-  const LevelView view = parent.view();
+  const LevelView& view = parent.view();
   if (i < map.edge_points) return scheme.face_point(view, i - map.face_points, mask);
   if (i < map.vertex_points) {
     const Index e = i - map.edge_points;
-    const double s = edge_sharpness_of(parent.creasing, e);
-    if (s <= 0.0) return scheme.edge_point(view, e, EdgeRule::smooth, mask);
-    if (s >= 1.0) return scheme.edge_point(view, e, EdgeRule::crease, mask);
-    mask.set_scale(1.0 - s);
+    if (edge_sharpness_of(parent.creasing, e) <= 0.0) return scheme.edge_point(view, e, EdgeRule::smooth, mask);
+    const double c = edge_crease_weight(parent.creasing, e);  // the crease rule's share: 1, or s
+    if (c == 1.0) return scheme.edge_point(view, e, EdgeRule::crease, mask);
+    mask.set_scale(1.0 - c);
     scheme.edge_point(view, e, EdgeRule::smooth, mask);
-    mask.set_scale(s);
+    mask.set_scale(c);
     return scheme.edge_point(view, e, EdgeRule::crease, mask);
   }
   const Index v = i - map.vertex_points;
@@ -100,13 +107,17 @@ struct Level {
 // its creasing for the masks.
 template <typename Fn>
 Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const Scheme& scheme,
-                  BoundaryInterpolation boundary, const RefineOptions& options, Fn&& fn) {
-  const LevelCreasing creasing = compute_creasing(parent, topology, boundary);
+                  BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options, Fn&& fn) {
+  const LevelCreasing creasing = compute_creasing(parent, topology, boundary, method);
   std::vector<double> sector_angle;
   if (options.boundary_rules == BoundaryRules::piecewise_smooth)
     sector_angle = detail::sector_angles(parent, topology, creasing);
   Level level;
-  level.map = split_topology(parent, topology, scheme.split, level.child);
+  level.map = split_topology(parent, topology, scheme.split, level.child, creasing.child_edge_sharpness);
+  if (level.child.tags.crease_method != method) {  // overridden: the child's tags say how they were made
+    level.child.tags.crease_method = method;
+    level.child.tags.crease_method_set = true;
+  }
   level.flatness = detail::flatness_sites(scheme, topology, creasing, sector_angle, level.map, options);
   fn(ParentLevel{parent, topology, creasing, sector_angle}, level);
   return level;
@@ -289,10 +300,11 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
                    const SourceLines* lines) {
   MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  const CreaseMethod method = crease_method_of(mesh, options);
   PolygonMesh result;
   run_with_threads(options.threads, [&] {
     result = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_step(parent, topology, scheme, boundary, options, [&](const ParentLevel& view, Level& level) {
+      return refine_step(parent, topology, scheme, boundary, method, options, [&](const ParentLevel& view, Level& level) {
         evaluate_fast(parent, scheme, view, level);
         detail::apply_flatness(level.flatness, level.child);
       });
@@ -305,10 +317,11 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
                                           PolygonMesh* final_level) {
   MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  const CreaseMethod method = crease_method_of(mesh, options);
   std::vector<StencilTable> tables;
   run_with_threads(options.threads, [&] {
     PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      Level level = refine_step(parent, topology, scheme, boundary, options, [&](const ParentLevel& view, Level& lv) {
+      Level level = refine_step(parent, topology, scheme, boundary, method, options, [&](const ParentLevel& view, Level& lv) {
         tables.push_back(record_stencils(view, scheme, lv.map, nullptr));
         detail::apply_flatness(lv.flatness, tables.back());
       });
@@ -323,10 +336,11 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
 StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
   MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  const CreaseMethod method = crease_method_of(mesh, options);
   std::optional<StencilTable> total;
   run_with_threads(options.threads, [&] {
     refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_step(parent, topology, scheme, boundary, options, [&](const ParentLevel& view, Level& lv) {
+      return refine_step(parent, topology, scheme, boundary, method, options, [&](const ParentLevel& view, Level& lv) {
         total = record_stencils(view, scheme, lv.map, total ? &*total : nullptr);
         detail::apply_flatness(lv.flatness, *total);
       });

@@ -22,7 +22,7 @@ inline std::pair<Index, Index> crease_neighbours(const LevelView& level, Index v
   Index found[2] = {kInvalidIndex, kInvalidIndex};
   int n = 0;
   for (const Index e : level.topology.vertex_edges(v))
-    if (level.is_sharp(e) && n < 2) found[n++] = level.topology.other_vertex(e, v);
+    if (level.is_sharp_at(e, v) && n < 2) found[n++] = level.topology.other_vertex(e, v);
   return {found[0], found[1]};
 }
 

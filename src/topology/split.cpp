@@ -24,7 +24,7 @@ double child_sharpness(double s) {
 }
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
-                    PolygonMesh& child) {
+                    std::span<const double> child_end_sharpness, PolygonMesh& child) {
   const Tags& in = parent.tags;
   Tags& out = child.tags;
   out = Tags{};
@@ -41,11 +41,19 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
   out.other = in.other;
 
   for (const CreaseTag& c : in.creases) {
-    const double s = child_sharpness(c.sharpness);
     const Index e = topology.find_edge(c.v0, c.v1);
-    if (s <= 0.0 || e == kInvalidIndex) continue;
-    out.creases.push_back({map.vertex_point(c.v0), map.edge_point(e), s});
-    out.creases.push_back({map.edge_point(e), map.vertex_point(c.v1), s});
+    if (e == kInvalidIndex) continue;
+    double s0 = child_sharpness(c.sharpness), s1 = s0;  // the halves at c.v0 and c.v1
+    if (!child_end_sharpness.empty() && c.sharpness > 0.0 && c.sharpness < kInfiniteSharpness) {
+      // Chaikin: each half its own value, unless the edge is infinitely
+      // sharp anyway (a boundary), where the tag decays as usual.
+      const std::size_t at_v0 = 2 * static_cast<std::size_t>(e) + (topology.edge_vertices(e)[0] == c.v0 ? 0 : 1);
+      const std::size_t at_v1 = at_v0 ^ 1;
+      if (child_end_sharpness[at_v0] < kInfiniteSharpness) s0 = child_end_sharpness[at_v0];
+      if (child_end_sharpness[at_v1] < kInfiniteSharpness) s1 = child_end_sharpness[at_v1];
+    }
+    if (s0 > 0.0) out.creases.push_back({map.vertex_point(c.v0), map.edge_point(e), s0});
+    if (s1 > 0.0) out.creases.push_back({map.edge_point(e), map.vertex_point(c.v1), s1});
   }
   for (const CornerTag& c : in.corners) {
     CornerTag t = c;
@@ -77,11 +85,11 @@ void require_edges(const MeshTopology& topology) {
 }  // namespace detail
 
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
-                        PolygonMesh& child) {
+                        PolygonMesh& child, std::span<const double> child_end_sharpness) {
   detail::require_edges(topology);
   SplitMap map = rule == SplitRule::quad ? detail::quad_split(topology, child)
                                          : detail::triangle_split(topology, child);
-  detail::propagate_tags(parent, topology, map, child);
+  detail::propagate_tags(parent, topology, map, child_end_sharpness, child);
   // Vertex channels are the masks' to fill; face-varying ones split here.
   child.vertex_channels.clear();
   child.face_varying_channels.resize(parent.face_varying_channels.size());

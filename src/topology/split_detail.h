@@ -16,7 +16,7 @@ void quad_split_face_varying(const MeshTopology& topology, const FaceVaryingChan
 void triangle_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
-                    PolygonMesh& child);
+                    std::span<const double> child_end_sharpness, PolygonMesh& child);
 void require_edges(const MeshTopology& topology);
 
 }  // namespace subdiv::detail

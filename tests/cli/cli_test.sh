@@ -103,6 +103,29 @@ cmp -s "$work/t1.ply" "$work/t2.ply" && pass || fail "refine output depends on t
 run refine-self 1 refine "$work/cc.obj" -o "$work/cc.obj" && stderr_has refine-self "output is the input file"
 run refine-levels 1 refine "$meshes/cube.obj" -l 40 -o "$work/x.obj" && stderr_one_line refine-levels
 
+# Chaikin creasing: a 4 x 2 grid with the crease 6 - 7 - 8 of sharpness 2 and 3;
+# at vertex 7 the halves get 3/4 * 2 + 1/4 * 3 - 1 = 1.25 and 1.75.
+{
+  for j in 0 1 2; do for i in 0 1 2 3 4; do echo "v $i $j 0"; done; done
+  for j in 0 1; do for i in 0 1 2 3; do
+    a=$((j * 5 + i + 1)); echo "f $a $((a + 1)) $((a + 6)) $((a + 5))"
+  done; done
+  echo "t crease 2/1/0 6 7 2"
+  echo "t crease 2/1/0 7 8 3"
+  echo "t creasemethod 0/0/1 chaikin"
+} >"$work/chaikin.obj"
+run refine-chaikin 0 refine "$work/chaikin.obj" -o "$work/chaikin_1.obj"
+grep -q '^t crease 2/1/0 [0-9]* [0-9]* 1.25$' "$work/chaikin_1.obj" &&
+  grep -q '^t crease 2/1/0 [0-9]* [0-9]* 1.75$' "$work/chaikin_1.obj" && pass ||
+  fail "refine: Chaikin halves 1.25 and 1.75 not in the refined tags"
+run refine-chaikin-uniform 0 refine "$work/chaikin.obj" --crease-method uniform -o "$work/uniform_1.obj"
+grep -q ' 1.25$' "$work/uniform_1.obj" && fail "refine --crease-method uniform: Chaikin sharpness" || pass
+grep -q '^t creasemethod 0/0/1 normal$' "$work/uniform_1.obj" && pass ||
+  fail "refine --crease-method uniform: the output's tag does not name the method used"
+run refine-crease-method-bad 1 refine "$work/chaikin.obj" --crease-method normal -o "$work/x.obj" &&
+  stderr_one_line refine-crease-method-bad
+run limit-chaikin 0 limit "$work/chaikin.obj" -o "$work/chaikin_limit.obj"
+
 # analyze: tables, JSON, plots and the error contract.
 run analyze-help 0 analyze --help && stdout_has analyze-help "Example" && stdout_has analyze-help "tangent masks"
 for scheme in loop catmull-clark; do

@@ -202,7 +202,7 @@ TEST_P(OpenSubdivLimit, ClosedFormsMatchOpenSubdiv) {
   options.max_resolve_levels = 0;  // compare on this level; semi-sharp neighbourhoods fall back and are skipped
   const LimitResult ours = limit_positions(level, scheme, options);
   const MeshTopology t(level);
-  const LevelCreasing creasing = compute_creasing(level, t, boundary);
+  const LevelCreasing creasing = compute_creasing(level, t, boundary, level.tags.crease_method);
   const double tolerance = 1e-12 * bbox_diagonal(mesh.positions);
   int positions = 0, normals = 0, tangents = 0;
   for (Index v = 0; v < level.vertex_count(); ++v) {

@@ -14,9 +14,11 @@
 //
 // Boundary interpolation follows OpenSubdiv's regression harness: an absent
 // `t interpolateboundary` tag, or 0, refines as edge-only. Shapes using what
-// subdiv does not implement yet are skipped, saying why: Chaikin creasing,
-// hierarchical edits, smooth-triangle Catmull-Clark, and meshes refine()
-// rejects.
+// subdiv does not implement yet are skipped, saying why: hierarchical edits,
+// smooth-triangle Catmull-Clark, and meshes refine() rejects. Where Hbr
+// itself differs from OpenSubdiv's Sdc/Far rules, which subdiv follows (see
+// opensubdiv_agreement_test.cpp), the difference is listed, with what
+// differs, in kKnownDifferences.
 
 #include <gtest/gtest.h>
 
@@ -26,11 +28,13 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <iostream>
 #include <iterator>
 #include <limits>
 #include <map>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "subdiv/core/error.h"
@@ -48,6 +52,41 @@ namespace fs = std::filesystem;
 
 constexpr double kRelativeTolerance = 1e-6;  // of the scale (see top); the baselines are float32
 constexpr double kRelativeCell = 1e-4;       // grid cell size, relative to the bounding-box diagonal
+
+// Genuine differences, kept under test: from `level` on, the baseline
+// differs from subdiv's refinement; the levels before it are compared in
+// full. The test fails if the difference disappears, so that this list stays
+// true.
+struct KnownDifference {
+  std::string_view shape;
+  int level;
+  std::string_view why;
+};
+constexpr KnownDifference kKnownDifferences[] = {
+    // Chaikin creasing; level 1 agrees. Where a vertex's rule changes, Hbr
+    // decides and weights the transition with the uniform method's tests
+    // even under Chaikin creasing (HbrHalfedge::IsSharp: an edge of sharpness
+    // >= 1 stays sharp; HbrVertex::GetFractionalMask averages the edges of
+    // sharpness in (0, 1)), Sdc with the Chaikin children that decay to 0:
+    // at a level-1 edge-point vertex whose halves have sharpness 1 and 0.25
+    // (both decay), Hbr blends in the crease rule with weight 0.25, Sdc with
+    // 0.625. (Hbr's Chaikin sharpness also differs from Sdc::Crease's where
+    // a semi-sharp edge has no other semi-sharp edge at a vertex: Hbr
+    // averages infinitely sharp edges in, or takes 3/4 s - 1 when there is
+    // no other sharp edge; Sdc takes s - 1.) subdiv follows Sdc, agreeing
+    // with OpenSubdiv's Far refiner to 1e-12 (opensubdiv_agreement_test.cpp);
+    // Far itself differs from this baseline by up to 0.033 at level 2 and
+    // 0.019 at level 3 (bounding-box diagonal 3.3), as subdiv does.
+    {"catmark_chaikin1", 2,
+     "Hbr's Chaikin creasing weights rule transitions by the uniform test; Sdc/Far (and subdiv) by the "
+     "Chaikin child sharpness"},
+};
+
+const KnownDifference* known_difference(const std::string& shape) {
+  for (const KnownDifference& k : kKnownDifferences)
+    if (k.shape == shape) return &k;
+  return nullptr;
+}
 
 fs::path shape_dir() { return test::opensubdiv_shape_dir(); }
 using test::harness_boundary;
@@ -244,6 +283,7 @@ TEST_P(HbrBaseline, RefinementMatchesTheBaseline) {
   if (const std::string why = rejection(mesh, *scheme, options); !why.empty())
     GTEST_SKIP() << shape << ": " << why;
 
+  const KnownDifference* known = known_difference(shape);
   PolygonMesh ours = std::move(mesh);
   int level = 0;
   for (const int k : levels) {
@@ -266,6 +306,15 @@ TEST_P(HbrBaseline, RefinementMatchesTheBaseline) {
     const PointGrid their_grid(baseline.positions, cell);
     const Matching ours_to_theirs = match(ours.positions, their_grid, tolerance);
     const Matching theirs_to_ours = match(baseline.positions, our_grid, tolerance);
+    if (known && k >= known->level) {
+      if (ours_to_theirs.unmatched != 0 || theirs_to_ours.unmatched != 0) {
+        std::cout << "[   NOTE   ] " << shape << ", " << k << " levels: known difference (largest distance "
+                  << std::max(ours_to_theirs.max_distance, theirs_to_ours.max_distance) << "): " << known->why
+                  << "\n";
+        continue;
+      }
+      ADD_FAILURE() << "known difference no longer observed: remove it from kKnownDifferences (" << known->why << ")";
+    }
     EXPECT_EQ(ours_to_theirs.unmatched, 0u)
         << "our vertices without a baseline vertex within " << tolerance << "; largest distance "
         << ours_to_theirs.max_distance << " (" << ours_to_theirs.max_distance / diagonal

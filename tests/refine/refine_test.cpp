@@ -34,12 +34,22 @@ PolygonMesh creased_cube() {
   return m;
 }
 
+// The creased cube with Chaikin creasing: vertex 2 joins semi-sharp edges of
+// 2.5 and 0.5, so the halves of 1-2 and 2-6 differ one level down.
+PolygonMesh chaikin_creased_cube() {
+  PolygonMesh m = creased_cube();
+  m.tags.crease_method = CreaseMethod::chaikin;
+  m.tags.crease_method_set = true;
+  return m;
+}
+
 // Meshes that exercise every rule: smooth, boundary, corner, crease,
-// semi-sharp, n-gons and triangles.
+// semi-sharp (uniform and Chaikin creasing), n-gons and triangles.
 std::vector<std::pair<std::string, PolygonMesh>> quad_cases() {
   std::vector<std::pair<std::string, PolygonMesh>> out;
   out.emplace_back("cube", test::cube());
   out.emplace_back("creased cube", creased_cube());
+  out.emplace_back("chaikin creased cube", chaikin_creased_cube());
   out.emplace_back("grid", test::quad_grid(3, 2));
   out.emplace_back("spot", read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh);
   return out;
@@ -48,6 +58,7 @@ std::vector<std::pair<std::string, PolygonMesh>> triangle_cases() {
   std::vector<std::pair<std::string, PolygonMesh>> out;
   out.emplace_back("tetrahedron", test::tetrahedron());
   out.emplace_back("triangulated creased cube", triangulate(creased_cube()));
+  out.emplace_back("triangulated chaikin creased cube", triangulate(chaikin_creased_cube()));
   out.emplace_back("triangle grid", test::triangle_grid(3, 3));
   return out;
 }

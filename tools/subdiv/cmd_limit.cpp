@@ -29,6 +29,7 @@ struct LimitCommandOptions {
   int levels = 0;
   std::string masks = "closed-form";
   std::string boundary;
+  std::string crease_method;
   bool normals = false;
   bool allow_non_manifold = false;
   bool triangulate = false;
@@ -51,6 +52,8 @@ int run_limit(const LimitCommandOptions& opt) {
   options.refine.allow_non_manifold = opt.allow_non_manifold;
   if (opt.boundary == "edge-only") options.refine.boundary = BoundaryInterpolation::edge_only;
   else if (opt.boundary == "edge-and-corner") options.refine.boundary = BoundaryInterpolation::edge_and_corner;
+  if (opt.crease_method == "uniform") options.refine.crease_method = CreaseMethod::uniform;
+  else if (opt.crease_method == "chaikin") options.refine.crease_method = CreaseMethod::chaikin;
 
   // The mesh whose vertices are written: the input, or its refinement.
   PolygonMesh out = std::move(file.mesh);
@@ -109,6 +112,8 @@ Command add_limit_command(CLI::App& app) {
       ->check(CLI::Range(0, 6));
   cmd->add_option("--boundary", opt->boundary, "Boundary interpolation, overriding the file's tag")
       ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
+  cmd->add_option("--crease-method", opt->crease_method, "Semi-sharp crease rule, overriding the file's tag")
+      ->check(CLI::IsMember({"uniform", "chaikin"}));
   cmd->add_flag("--normals", opt->normals, "Also write limit normals (from the tangent masks)");
   cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold, "Treat non-manifold elements as sharp");
   cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");

@@ -26,6 +26,7 @@ struct RefineCommandOptions {
   std::string scheme = "catmull-clark";
   int levels = 1;
   std::string boundary;
+  std::string crease_method;
   int threads = 0;
   bool stats = false;
   bool allow_non_manifold = false;
@@ -46,8 +47,6 @@ int run_refine(const RefineCommandOptions& opt) {
     file.lines.face_lines.clear();  // faces and holes were renumbered
     file.lines.hole_lines.clear();
   }
-  if (file.mesh.tags.crease_method == CreaseMethod::chaikin)
-    throw InvalidInputError(opt.input + ": creasemethod chaikin is not supported yet (only the uniform method)");
   if (!file.mesh.tags.other.empty())
     std::fprintf(stderr, "subdiv: warning: %s: %zu tags not interpreted (e.g. '%s'), carried through unchanged\n",
                  opt.input.c_str(), file.mesh.tags.other.size(), file.mesh.tags.other.front().name.c_str());
@@ -59,6 +58,8 @@ int run_refine(const RefineCommandOptions& opt) {
   options.threads = opt.threads;
   if (opt.boundary == "edge-only") options.boundary = BoundaryInterpolation::edge_only;
   else if (opt.boundary == "edge-and-corner") options.boundary = BoundaryInterpolation::edge_and_corner;
+  if (opt.crease_method == "uniform") options.crease_method = CreaseMethod::uniform;
+  else if (opt.crease_method == "chaikin") options.crease_method = CreaseMethod::chaikin;
 
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
@@ -113,6 +114,9 @@ Command add_refine_command(CLI::App& app) {
   cmd->add_option("--boundary", opt->boundary,
                   "Boundary interpolation, overriding the file's tag (default: the tag, else edge-and-corner)")
       ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
+  cmd->add_option("--crease-method", opt->crease_method,
+                  "Semi-sharp crease rule, overriding the file's creasemethod tag (default: the tag, else uniform)")
+      ->check(CLI::IsMember({"uniform", "chaikin"}));
   cmd->add_option("--threads", opt->threads, "Worker threads (0 = all cores); results do not depend on it")
       ->capture_default_str()
       ->check(CLI::Range(0, 1024));

@@ -2,20 +2,29 @@
 // Sharpness and vertex rules of one level, the same for every scheme:
 // infinitely sharp and semi-sharp creases and corners (DeRose, Kass and
 // Truong 1998, "Subdivision surfaces in character animation", section 3, as
-// OpenSubdiv's Sdc::Crease implements them with its uniform creasing method).
+// OpenSubdiv's Sdc::Crease implements them, with its uniform or its Chaikin
+// creasing method).
 //
 // - Boundary, non-manifold and inconsistently oriented edges are infinitely
 //   sharp; so is a boundary vertex with a single face in edge-and-corner
 //   mode, an isolated vertex, and a non-manifold vertex unless it lies on
 //   exactly two sharp edges (a non-manifold crease).
-// - One level down, a sharpness s becomes s - 1 (infinite stays infinite).
-// - An edge point uses the crease rule for s >= 1, the smooth rule for
-//   s <= 0, and (1 - s) smooth + s crease in between.
+// - One level down, a sharpness s becomes s - 1 (infinite stays infinite):
+//   vertex sharpness always, edge sharpness with the uniform method.
+// - Chaikin creasing (Sdc::Options::CREASE_CHAIKIN, `t creasemethod chaikin`)
+//   subdivides a semi-sharp edge's sharpness per end: the child of edge e at
+//   its end vertex v gets 3/4 s(e) + 1/4 mean(s of the other semi-sharp edges
+//   at v) - 1, at least 0; s(e) - 1 where e is the only semi-sharp edge at v.
+//   The two halves of an edge can then differ (child_edge_sharpness).
+// - An edge point uses the crease rule where the edge is sharp and both its
+//   children are sharp one level down (uniform: s >= 1), the smooth rule for
+//   s <= 0, and (1 - s) smooth + s crease otherwise (edge_crease_weight).
 // - A vertex's rule follows from its own sharpness and the number of sharp
 //   edges around it (corner, or 0/1/2/3+ sharp edges: smooth, dart, crease,
-//   corner). Where the rule one level down differs, the vertex point blends
-//   the two masks, with weight w on the parent's rule: the mean parent
-//   sharpness of the edges (and the vertex) that stop being sharp, at most 1.
+//   corner). Where the rule one level down (from the children of its edges at
+//   the vertex) differs, the vertex point blends the two masks, with weight w
+//   on the parent's rule: the mean parent sharpness of the edges (and the
+//   vertex) that stop being sharp, at most 1.
 
 #include <span>
 #include <vector>
@@ -34,19 +43,58 @@ struct LevelCreasing {
   std::vector<VertexRule> child_vertex_rule; ///< from the sharpness one level down
   /// w where the two rules differ, else 1; empty when no rule differs.
   std::vector<double> parent_rule_weight;
+  /// Chaikin creasing only: the sharpness one level down of each edge's two
+  /// children, the child at end i of edge e (topology.edge_vertices(e)[i])
+  /// at 2e + i. Empty with the uniform method, and when the level has no
+  /// semi-sharp edge (Chaikin's rule is then the uniform one): every child
+  /// is then subdivide_sharpness() of its parent (child_sharpness_of).
+  std::vector<double> child_edge_sharpness;
 };
 
 /// OpenSubdiv's uniform rule for a sharpness one level down.
 double subdivide_sharpness(double s);
+
+/// The sharpness one level down of the children, at vertex v, of the edges
+/// around v whose sharpnesses are `parent` (Sdc::Crease::
+/// SubdivideEdgeSharpnessesAroundVertex): subdivide_sharpness() with the
+/// uniform method; with Chaikin's, a semi-sharp edge's child gets
+/// 3/4 s + 1/4 (mean of the other semi-sharp s) - 1, at least 0, or s - 1
+/// when it is the only semi-sharp edge. `child` has parent.size() entries.
+void subdivide_sharpness_around_vertex(CreaseMethod method, std::span<const double> parent, std::span<double> child);
 
 /// The sharpness of edge e (0 when the level has no sharp edge).
 inline double edge_sharpness_of(const LevelCreasing& c, Index e) {
   return c.edge_sharpness.empty() ? 0.0 : c.edge_sharpness[static_cast<std::size_t>(e)];
 }
 
+/// The sharpness one level down of edge e's child at end `end` (0 or 1,
+/// as in topology.edge_vertices(e)).
+inline double child_sharpness_of(const LevelCreasing& c, Index e, int end) {
+  if (c.child_edge_sharpness.empty()) return subdivide_sharpness(edge_sharpness_of(c, e));
+  return c.child_edge_sharpness[2 * static_cast<std::size_t>(e) + static_cast<std::size_t>(end)];
+}
+
+/// The weight of the crease rule in edge e's edge point, the smooth rule
+/// getting the rest (Sdc::Scheme::ComputeEdgeVertexMask): 0 for a smooth
+/// edge, 1 where both children of the edge stay sharp (uniform: s >= 1), s
+/// otherwise. With Chaikin creasing an edge of sharpness s in (1, 4/3) can
+/// have a child that decays to 0; OpenSubdiv then weights the crease rule
+/// by s > 1 (an affine extrapolation), and so does subdiv.
+inline double edge_crease_weight(const LevelCreasing& c, Index e) {
+  const double s = edge_sharpness_of(c, e);
+  if (s <= 0.0) return 0.0;
+  if (c.child_edge_sharpness.empty()) return s >= 1.0 ? 1.0 : s;
+  const std::size_t i = 2 * static_cast<std::size_t>(e);
+  return c.child_edge_sharpness[i] > 0.0 && c.child_edge_sharpness[i + 1] > 0.0 ? 1.0 : s;
+}
+
 /// The rule for a vertex of this sharpness whose edges have these sharpnesses.
 VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count);
 
-LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topology, BoundaryInterpolation boundary);
+/// The creasing of a level whose tags are `mesh.tags` (crease and corner
+/// sharpness), under `boundary` and the creasing `method` (the caller's
+/// choice: refinement uses the mesh's `creasemethod` tag unless overridden).
+LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topology, BoundaryInterpolation boundary,
+                               CreaseMethod method);
 
 }  // namespace subdiv

@@ -58,6 +58,10 @@ struct RefineOptions {
   /// unset for the default s = 1 - (1/4) / lambda_3, 0 to switch the
   /// modification off.
   std::optional<double> flatness;
+  /// Overrides the mesh's `creasemethod` tag (uniform or Chaikin creasing of
+  /// semi-sharp edges; creasing.h). The refined levels' tags then name this
+  /// method, since their crease sharpness was subdivided by it.
+  std::optional<CreaseMethod> crease_method;
 };
 
 /// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined

@@ -39,6 +39,13 @@ const char* to_string(VertexRule);
 /// `sharp_above`: 0 for this level's rule, 1 for the rule one level down
 /// (a sharpness s becomes s - 1 there). Boundary and non-manifold edges are
 /// infinitely sharp. An empty sharpness array means no edge is sharp.
+///
+/// With Chaikin creasing an edge's two children can differ one level down
+/// (creasing.h), so "is e sharp one level down" depends on the end: the view
+/// for the rule one level down then also carries `child_end_sharpness`, the
+/// children's sharpness per edge end (2e + i for the child at
+/// topology.edge_vertices(e)[i]), and is_sharp_at(e, v) asks whether the
+/// child at v's end is sharp. Masks ask is_sharp_at where they know the vertex.
 struct LevelView {
   const MeshTopology& topology;
   std::span<const double> edge_sharpness;
@@ -49,9 +56,16 @@ struct LevelView {
   /// next to such a vertex use theta_k = alpha / k, k the faces of the
   /// sector (rules/rule_helpers.h: sector_theta).
   std::span<const double> sector_angle = {};
+  std::span<const double> child_end_sharpness = {};  ///< empty: is_sharp_at == is_sharp
 
   bool is_sharp(Index e) const {
     return !edge_sharpness.empty() && edge_sharpness[static_cast<std::size_t>(e)] > sharp_above;
+  }
+  /// Whether edge e is sharp for the rule at its end vertex v.
+  bool is_sharp_at(Index e, Index v) const {
+    if (child_end_sharpness.empty()) return is_sharp(e);
+    const std::size_t end = topology.edge_vertices(e)[0] == v ? 0 : 1;
+    return child_end_sharpness[2 * static_cast<std::size_t>(e) + end] > 0.0;
   }
 };
 

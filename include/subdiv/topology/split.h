@@ -10,6 +10,7 @@
 // The child is a complete PolygonMesh (faces, tags, face-varying indices);
 // its positions and vertex channels are left for a scheme's masks to fill.
 
+#include <span>
 #include <vector>
 
 #include "subdiv/mesh/polygon_mesh.h"
@@ -45,9 +46,14 @@ std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, 
 /// the child vertex count and zero-filled; vertex channels are not created.
 /// The parent's faces are read from `topology` only (the parent mesh gives
 /// tags and face-varying channels).
+/// `child_end_sharpness`, when given (Chaikin creasing, LevelCreasing::
+/// child_edge_sharpness: 2e + i for the child at topology.edge_vertices(e)[i]),
+/// gives each half of a semi-sharp crease its own child sharpness instead of
+/// the tag's minus one (a half that is still infinitely sharp, an edge
+/// sharp for being a boundary, keeps the tag's minus one).
 /// Requires every face corner to have an edge (no degenerate faces) and, for
 /// the triangle split, triangles only; throws TopologyError otherwise.
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
-                        PolygonMesh& child);
+                        PolygonMesh& child, std::span<const double> child_end_sharpness = {});
 
 }  // namespace subdiv
