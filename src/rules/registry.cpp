@@ -1,6 +1,7 @@
 #include <array>
 
 #include "subdiv/rules/bilinear.h"
+#include "subdiv/rules/butterfly.h"
 #include "subdiv/rules/catmull_clark.h"
 #include "subdiv/rules/linear.h"
 #include "subdiv/rules/loop.h"
@@ -19,9 +20,9 @@ const char* to_string(VertexRule r) {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 5> schemes = {&catmull_clark_scheme(), &loop_scheme(),
-                                                       &loop_warren_scheme(), &bilinear_scheme(),
-                                                       &linear_scheme()};
+  static const std::array<const Scheme*, 7> schemes = {
+      &catmull_clark_scheme(), &loop_scheme(),      &loop_warren_scheme(), &butterfly_scheme(),
+      &modified_butterfly_scheme(), &bilinear_scheme(), &linear_scheme()};
   return schemes;
 }
 

@@ -87,6 +87,7 @@ leftovers=$(find "$work" -name '*.tmp-*' | wc -l)
 
 # refine and schemes
 run schemes 0 schemes && stdout_has schemes "catmull-clark" && stdout_has schemes "loop-warren"
+stdout_has schemes "butterfly" && stdout_has schemes "modified-butterfly"
 run refine-cc 0 refine "$meshes/cube.obj" -s catmull-clark -l 2 -o "$work/cc.obj"
 stdout_has refine-cc "wrote $work/cc.obj: 98 vertices, 96 faces"
 run refine-cc-info 0 info "$work/cc.obj" && stdout_has refine-cc-info "valences        3:8  4:90"
@@ -94,6 +95,12 @@ run refine-loop-quads 1 refine "$meshes/cube.obj" -s loop -o "$work/loop.obj"
 stderr_one_line refine-loop-quads && stderr_has refine-loop-quads "needs a triangle mesh"
 run refine-loop-tri 0 refine "$meshes/cube.obj" -s loop --triangulate -l 3 -o "$work/loop.ply" --stats
 stdout_has refine-loop-tri "level 3: 386 vertices, 768 faces"
+for scheme in butterfly modified-butterfly; do
+  run "refine-$scheme" 0 refine "$meshes/cube.obj" -s "$scheme" --triangulate -l 2 -o "$work/$scheme.obj" --stats
+  stdout_has "refine-$scheme" "level 2: 98 vertices, 192 faces"
+  run "refine-$scheme-quads" 1 refine "$meshes/cube.obj" -s "$scheme" -o "$work/$scheme.obj"
+  stderr_one_line "refine-$scheme-quads" && stderr_has "refine-$scheme-quads" "needs a triangle mesh"
+done
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold
@@ -133,6 +140,13 @@ for scheme in loop catmull-clark; do
   for k in 3 4 5 6; do
     grep -qE "^interior k=$k .* C1 " "$work/out" && pass || fail "analyze $scheme: no C1 row for k=$k"
   done
+done
+run analyze-butterfly 0 analyze -s butterfly -k 3..10
+grep -qE "^interior k=3 .* inconclusive" "$work/out" && grep -qE "^interior k=9 .* inconclusive" "$work/out" &&
+  grep -qE "^interior k=5 .* C1 " "$work/out" && pass || fail "analyze butterfly: verdicts at k = 3, 5, 9"
+run analyze-modified-butterfly 0 analyze -s modified-butterfly -k 3..16
+for k in 3 4 9 16; do
+  grep -qE "^interior k=$k .* C1 " "$work/out" && pass || fail "analyze modified-butterfly: no C1 row for k=$k"
 done
 run analyze-boundary 0 analyze -s catmull-clark --boundary -k 1..5 && stdout_has analyze-boundary "boundary k=5"
 run analyze-corner 0 analyze -s loop --corner concave -k 1..3 && stdout_has analyze-corner "concave corner k=2"
