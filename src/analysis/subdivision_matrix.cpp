@@ -53,6 +53,10 @@ double angle_of(Vec3 p) {
 LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings,
                                                 const RefineOptions& rules) {
   if (rings < 1) throw InvalidInputError("subdivision matrix: rings must be >= 1, not " + std::to_string(rings));
+  if (scheme.split == SplitRule::dual)
+    throw InvalidInputError(std::string(scheme.name) +
+                            ": the analysis covers vertex configurations of the quad and triangle splits, not the "
+                            "dual split's extraordinary faces");
   const RingMesh ring = ring_mesh(scheme.split, configuration, ring_mesh_size(rings));
   const MeshTopology topology(ring.mesh);
   const std::vector<int> ring_number = face_rings(topology, ring.centre, rings);

@@ -122,6 +122,11 @@ int max_valence(const PolygonMesh& mesh) {
 }  // namespace
 
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
+  if (scheme.split == SplitRule::dual)
+    throw InvalidInputError(std::string(scheme.name) +
+                            ": the depth needs vertex-to-limit distances, which the dual split's vertices lack here; "
+                            "the paper's bound (doo_sabin_bound in subdiv/depth/depth_bound.h) takes the second "
+                            "differences after the first step");
   // Quad-split schemes on a mesh with other faces: the bound starts after
   // the first step, which makes every face a quad (as the paper does for
   // Doo-Sabin and the survey for Catmull-Clark).

@@ -49,6 +49,12 @@ struct ParentLevel {
 void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Index i, MaskBuilder& mask) {
   mask.clear();
   const LevelView& view = parent.view();
+  if (map.rule == SplitRule::dual) {
+    if (i < map.edge_points) return scheme.corner_point(view, i - map.corner_points, mask);
+    const Index boundary = (i - map.edge_points) / 2;
+    const Index e = map.boundary_edges[static_cast<std::size_t>(boundary)];
+    return scheme.boundary_point(view, e, view.topology.edge_vertices(e)[(i - map.edge_points) % 2], mask);
+  }
   if (i < map.edge_points) return scheme.face_point(view, i - map.face_points, mask);
   if (i < map.vertex_points) {
     const Index e = i - map.edge_points;
@@ -138,7 +144,8 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
     Level level = step(current, *topology);
     if (l + 1 == options.levels) topology.reset();
     else if (scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
-    else topology = MeshTopology::from_triangle_split(*topology, level.child);
+    else if (scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
+    else topology.reset();  // built from the child's faces
     current = std::move(level.child);
     if (options.on_level) options.on_level(l + 1, current);
     // A derived topology holds a copy of the level's faces, and refinement
@@ -242,6 +249,33 @@ void run_with_threads(int threads, Body&& body) {
 
 namespace {
 
+// The dual split has no rules for sharp features, holes or non-manifold
+// elements: refuse them, naming the tag's line.
+void check_dual_refinable(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                          const SourceLines* lines) {
+  const std::string name(scheme.name);
+  auto where = [&](const std::vector<std::uint32_t> SourceLines::*tag_lines, std::size_t i) {
+    const std::uint32_t line = lines ? SourceLines::at((*lines).*tag_lines, static_cast<Index>(i)) : 0;
+    if (!lines || lines->path.empty()) return std::string();
+    return lines->path + (line ? ":" + std::to_string(line) : "") + ": ";
+  };
+  if (options.boundary_rules == BoundaryRules::piecewise_smooth)
+    throw InvalidInputError(name + " has no piecewise-smooth rules; use the standard boundary rules");
+  if (options.allow_non_manifold) throw InvalidInputError(name + " cannot refine non-manifold meshes");
+  for (std::size_t i = 0; i < mesh.tags.creases.size(); ++i)
+    if (mesh.tags.creases[i].sharpness > 0.0)
+      throw InvalidInputError(where(&SourceLines::crease_lines, i) + name + " has no crease rules, but edge (" +
+                              std::to_string(mesh.tags.creases[i].v0) + ", " + std::to_string(mesh.tags.creases[i].v1) +
+                              ") is tagged as a crease");
+  for (std::size_t i = 0; i < mesh.tags.corners.size(); ++i)
+    if (mesh.tags.corners[i].sharpness > 0.0)
+      throw InvalidInputError(where(&SourceLines::corner_lines, i) + name + " has no corner rules, but vertex " +
+                              std::to_string(mesh.tags.corners[i].vertex) + " is tagged as a corner");
+  if (!mesh.tags.holes.empty())
+    throw InvalidInputError(where(&SourceLines::hole_lines, 0) + name + " has no rules for holes, but face " +
+                            std::to_string(mesh.tags.holes[0]) + " is tagged as a hole");
+}
+
 // Everything check_refinable() promises, returning the coarse mesh's
 // topology so that refinement does not build it a second time.
 MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
@@ -249,6 +283,7 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
   if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
   if (boundary_of(mesh, options) == BoundaryInterpolation::none)
     throw InvalidInputError("boundary interpolation 'none' is not supported; use edge-only or edge-and-corner");
+  if (scheme.split == SplitRule::dual) check_dual_refinable(mesh, scheme, options, lines);
   const std::string path = lines ? lines->path : std::string();
   try {
     check_face_arrays(mesh);

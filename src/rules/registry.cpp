@@ -3,6 +3,7 @@
 #include "subdiv/rules/bilinear.h"
 #include "subdiv/rules/butterfly.h"
 #include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/doo_sabin.h"
 #include "subdiv/rules/linear.h"
 #include "subdiv/rules/loop.h"
 #include "subdiv/rules/scheme.h"
@@ -20,9 +21,9 @@ const char* to_string(VertexRule r) {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 7> schemes = {
-      &catmull_clark_scheme(), &loop_scheme(),      &loop_warren_scheme(), &butterfly_scheme(),
-      &modified_butterfly_scheme(), &bilinear_scheme(), &linear_scheme()};
+  static const std::array<const Scheme*, 8> schemes = {
+      &catmull_clark_scheme(),      &loop_scheme(),       &loop_warren_scheme(), &butterfly_scheme(),
+      &modified_butterfly_scheme(), &doo_sabin_scheme(), &bilinear_scheme(),    &linear_scheme()};
   return schemes;
 }
 

@@ -11,10 +11,18 @@ namespace subdiv {
 
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f) {
   if (rule == SplitRule::quad) return {parent.face_first_corner(f), parent.face_first_corner(f) + parent.face_size(f)};
+  if (rule == SplitRule::dual) return {f, f + 1};
   return {4 * f, 4 * f + 4};
 }
 
-const char* to_string(SplitRule r) { return r == SplitRule::quad ? "quad split (QP, arity 2)" : "triangle split (TP, arity 2)"; }
+const char* to_string(SplitRule r) {
+  switch (r) {
+    case SplitRule::quad: return "quad split (QP, arity 2)";
+    case SplitRule::triangle: return "triangle split (TP, arity 2)";
+    case SplitRule::dual: return "dual split (QD, arity 2)";
+  }
+  return "?";
+}
 
 namespace detail {
 
@@ -39,6 +47,7 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
   out.face_varying_propagate_corners = in.face_varying_propagate_corners;
   out.face_varying_propagate_corners_set = in.face_varying_propagate_corners_set;
   out.other = in.other;
+  if (map.rule == SplitRule::dual) return;  // no sharp features there (check_refinable)
 
   for (const CreaseTag& c : in.creases) {
     const Index e = topology.find_edge(c.v0, c.v1);
@@ -87,16 +96,20 @@ void require_edges(const MeshTopology& topology) {
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
                         PolygonMesh& child, std::span<const double> child_end_sharpness) {
   detail::require_edges(topology);
-  SplitMap map = rule == SplitRule::quad ? detail::quad_split(topology, child)
-                                         : detail::triangle_split(topology, child);
+  SplitMap map = rule == SplitRule::quad       ? detail::quad_split(topology, child)
+                 : rule == SplitRule::triangle ? detail::triangle_split(topology, child)
+                                               : detail::dual_split(topology, child);
   detail::propagate_tags(parent, topology, map, child_end_sharpness, child);
   // Vertex channels are the masks' to fill; face-varying ones split here.
   child.vertex_channels.clear();
   child.face_varying_channels.resize(parent.face_varying_channels.size());
-  const auto split_channel = rule == SplitRule::quad ? detail::quad_split_face_varying
-                                                     : detail::triangle_split_face_varying;
-  for (std::size_t i = 0; i < parent.face_varying_channels.size(); ++i)
-    split_channel(topology, parent.face_varying_channels[i], child.face_varying_channels[i]);
+  for (std::size_t i = 0; i < parent.face_varying_channels.size(); ++i) {
+    const FaceVaryingChannel& in = parent.face_varying_channels[i];
+    FaceVaryingChannel& out = child.face_varying_channels[i];
+    if (rule == SplitRule::quad) detail::quad_split_face_varying(topology, in, out);
+    else if (rule == SplitRule::triangle) detail::triangle_split_face_varying(topology, in, out);
+    else detail::dual_split_face_varying(topology, map, child, in, out);
+  }
   return map;
 }
 

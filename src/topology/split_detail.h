@@ -10,10 +10,16 @@ double child_sharpness(double s);
 
 SplitMap quad_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap triangle_split(const MeshTopology& topology, PolygonMesh& child);
+SplitMap dual_split(const MeshTopology& topology, PolygonMesh& child);
 
 /// Face-varying values linear within each face, for the child's corners.
 void quad_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);
 void triangle_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);
+/// Dual split: a corner point's value halfway between its corner's value and
+/// its face's centroid value, a boundary point's 3/4 and 1/4 of its edge's
+/// end values in the edge's face; `child` holds the split's faces.
+void dual_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
+                             const FaceVaryingChannel& in, FaceVaryingChannel& out);
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
                     std::span<const double> child_end_sharpness, PolygonMesh& child);

@@ -101,6 +101,15 @@ for scheme in butterfly modified-butterfly; do
   run "refine-$scheme-quads" 1 refine "$meshes/cube.obj" -s "$scheme" -o "$work/$scheme.obj"
   stderr_one_line "refine-$scheme-quads" && stderr_has "refine-$scheme-quads" "needs a triangle mesh"
 done
+run refine-doo-sabin 0 refine "$meshes/cube.obj" -s doo-sabin -l 2 -o "$work/ds.obj" --stats
+stdout_has refine-doo-sabin "level 1: 24 vertices, 26 faces" && stdout_has refine-doo-sabin "level 2: 96 vertices, 98 faces"
+run refine-doo-sabin-info 0 info "$work/ds.obj" && stdout_has refine-doo-sabin-info "validation      ok"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nt crease 2/1/0 0 1 3\n' > "$work/ds_crease.obj"
+run refine-doo-sabin-crease 1 refine "$work/ds_crease.obj" -s doo-sabin -o "$work/x.obj"
+stderr_one_line refine-doo-sabin-crease && stderr_has refine-doo-sabin-crease "ds_crease.obj:6: doo-sabin has no crease rules"
+run limit-doo-sabin 1 limit "$meshes/cube.obj" -s doo-sabin -o "$work/x.obj" && stderr_one_line limit-doo-sabin
+run analyze-doo-sabin 1 analyze -s doo-sabin -k 3..5 && stderr_one_line analyze-doo-sabin
+run adaptive-doo-sabin 1 adaptive "$meshes/cube.obj" -s doo-sabin --eps 0.1 -o "$work/x.obj" && stderr_one_line adaptive-doo-sabin
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold
@@ -274,7 +283,7 @@ run depth-cc 0 depth "$meshes/cube.obj" -s catmull-clark --eps 0.01 --verify &&
 run depth-loop 0 depth "$meshes/tetrahedron.obj" -s loop --eps 0.01 --verify &&
   stdout_has depth-loop "bound (paper (regular) + analysis (extraordinary))" && stdout_has depth-loop "depth 3 would not have been enough"
 run depth-doo-sabin 1 depth "$meshes/cube.obj" -s doo-sabin --eps 0.01 && stderr_one_line depth-doo-sabin &&
-  stderr_has depth-doo-sabin "doo-sabin: the scheme is not in the registry yet"
+  stderr_has depth-doo-sabin "doo-sabin: the depth needs vertex-to-limit distances"
 run depth-bad-eps 1 depth "$meshes/cube.obj" -s loop --eps -1 && stderr_one_line depth-bad-eps
 run depth-bad-file 1 depth "$data/index_out_of_range.obj" -s catmull-clark --eps 0.1 && stderr_one_line depth-bad-file
 

@@ -28,14 +28,6 @@ struct DepthCommandOptions {
   bool allow_non_manifold = false;
 };
 
-const Scheme& depth_scheme(const std::string& name) {
-  if (name == "doo-sabin" && find_scheme(name) == nullptr)
-    throw InvalidInputError(
-        "doo-sabin: the scheme is not in the registry yet, so its first step cannot be computed; its bound "
-        "(doo_sabin_bound in subdiv/depth/depth_bound.h) applies to the mesh after that step");
-  return scheme_named(name);
-}
-
 void print_bound(const DepthBound& bound, double eps) {
   std::printf("bound (%s): distance to the limit after k >= %d steps <= max of\n", bound.source.c_str(), bound.start);
   for (const DepthTerm& term : bound.terms) {
@@ -59,7 +51,7 @@ void print_trade_off(const DepthBound& bound, double eps) {
 }
 
 int run_depth(const DepthCommandOptions& opt) {
-  const Scheme& scheme = depth_scheme(opt.scheme);
+  const Scheme& scheme = scheme_named(opt.scheme);
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
   if (opt.triangulate && scheme.needs_triangles) file.mesh = triangulate(file.mesh);

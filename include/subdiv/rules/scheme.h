@@ -121,6 +121,10 @@ class MaskBuilder {
 using FaceMask = void (*)(const LevelView& level, Index face, MaskBuilder& mask);
 using EdgeMask = void (*)(const LevelView& level, Index edge, EdgeRule rule, MaskBuilder& mask);
 using VertexMask = void (*)(const LevelView& level, Index vertex, VertexRule rule, MaskBuilder& mask);
+/// Dual split: the child vertex of face corner `corner`.
+using CornerMask = void (*)(const LevelView& level, Index corner, MaskBuilder& mask);
+/// Dual split: the child vertex near end `vertex` of boundary edge `edge`.
+using BoundaryPointMask = void (*)(const LevelView& level, Index edge, Index vertex, MaskBuilder& mask);
 
 struct Scheme {
   std::string_view name;      ///< as users type it: "catmull-clark", "loop-warren"
@@ -129,11 +133,13 @@ struct Scheme {
   SplitRule split;
   bool needs_triangles = false;
   FaceMask face_point = nullptr;  ///< quad split only
-  EdgeMask edge_point = nullptr;
-  VertexMask vertex_point = nullptr;
+  EdgeMask edge_point = nullptr;  ///< primal splits
+  VertexMask vertex_point = nullptr;  ///< primal splits
   /// Closed-form limit masks for the scheme's standard rules, or nullptr:
   /// limit positions then use the masks the analysis reads off the rules.
   LimitMaskFunction limit_masks = nullptr;
+  CornerMask corner_point = nullptr;  ///< dual split only
+  BoundaryPointMask boundary_point = nullptr;  ///< dual split only
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.

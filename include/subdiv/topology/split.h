@@ -6,6 +6,10 @@
 //     child vertices are numbered [face points | edge points | vertex points].
 //   triangle split (TP, arity 2): every triangle -> 4 triangles;
 //     child vertices are numbered [edge points | vertex points].
+//   dual split (QD, arity 2, Doo-Sabin): a child vertex per face corner, and
+//     a face per parent face, edge and vertex; child vertices are numbered
+//     [corner points | boundary points, two per boundary edge]
+//     (src/topology/dual_split.cpp).
 //
 // The child is a complete PolygonMesh (faces, tags, face-varying indices);
 // its positions and vertex channels are left for a scheme's masks to fill.
@@ -18,7 +22,7 @@
 
 namespace subdiv {
 
-enum class SplitRule { quad, triangle };
+enum class SplitRule { quad, triangle, dual };
 
 const char* to_string(SplitRule);
 
@@ -30,14 +34,22 @@ struct SplitMap {
   Index edge_points = 0;    ///< first child vertex made from a parent edge
   Index vertex_points = 0;  ///< first child vertex made from a parent vertex
   Index child_vertex_count = 0;
+  /// Dual split: the child vertex of parent corner c is corner_points + c;
+  /// edge_points starts the boundary points, two per edge of
+  /// `boundary_edges` (the one near edge_vertices(e)[0] first), and
+  /// vertex_points == child_vertex_count (no vertex points).
+  Index corner_points = 0;
+  std::vector<Index> boundary_edges;
 
   Index face_point(Index f) const { return face_points + f; }
   Index edge_point(Index e) const { return edge_points + e; }
   Index vertex_point(Index v) const { return vertex_points + v; }
+  Index corner_point(Index c) const { return corner_points + c; }
 };
 
 /// The child faces of parent face f, [first, last): the quad split makes one
-/// per corner (child face = parent corner), the triangle split 4f .. 4f+3.
+/// per corner (child face = parent corner), the triangle split 4f .. 4f+3,
+/// the dual split one (child face f, its F-face).
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f);
 
 /// The child level's faces, tags (crease and corner sharpness decremented by
