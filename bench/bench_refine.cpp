@@ -41,6 +41,20 @@ void BM_Refine_Loop(benchmark::State& state) {
 // 1M triangles to level 2 (16M triangles).
 BENCHMARK(BM_Refine_Loop)->Args({708, 2, 1})->Args({708, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Every scheme on the same inputs, one thread, items = output faces: the
+// Butterfly schemes against Loop, Doo-Sabin against Catmull-Clark
+// (~25k quads or 50k triangles to level 3).
+void BM_Refine_QuadScheme(benchmark::State& state, const char* scheme) { refine_bench(state, torus(158), scheme); }
+void BM_Refine_TriangleScheme(benchmark::State& state, const char* scheme) {
+  refine_bench(state, triangulated_torus(158), scheme);
+}
+BENCHMARK_CAPTURE(BM_Refine_QuadScheme, catmull_clark, "catmull-clark")->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_QuadScheme, doo_sabin, "doo-sabin")->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, loop, "loop")->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, butterfly, "butterfly")->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, modified_butterfly, "modified-butterfly")
+    ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Stencil path: build the table once (coarse -> level 2; arguments: mesh
 // size, levels, threads), then re-apply it to new positions, as for animation.
 void BM_StencilBuild_CatmullClark(benchmark::State& state) {

@@ -20,6 +20,7 @@
 
 #include "subdiv/rules/doo_sabin.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -32,11 +33,28 @@ double doo_sabin_weight(int k, int i) {
 
 namespace {
 
+// The weights of the common face sizes, computed once: evaluating the
+// cosines per corner was a third of the refinement time.
+constexpr int kTabulated = 16;
+struct WeightTable {
+  std::array<std::array<double, kTabulated + 1>, kTabulated + 1> w{};
+  WeightTable() {
+    for (int k = 3; k <= kTabulated; ++k)
+      for (int i = 0; i < k; ++i) w[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)] = doo_sabin_weight(k, i);
+  }
+};
+const WeightTable kWeights;
+
 void corner_point(const LevelView& level, Index corner, MaskBuilder& mask) {
   const MeshTopology& t = level.topology;
   const Index f = t.corner_face(corner), first = t.face_first_corner(f), k = t.face_size(f);
   const Index i = corner - first;
-  for (Index j = 0; j < k; ++j) mask.add(t.corner_vertex(first + j), doo_sabin_weight(k, ((j - i) % k + k) % k));
+  if (k <= kTabulated) {
+    const auto& w = kWeights.w[static_cast<std::size_t>(k)];
+    for (Index j = 0; j < k; ++j) mask.add(t.corner_vertex(first + j), w[static_cast<std::size_t>((j - i + k) % k)]);
+    return;
+  }
+  for (Index j = 0; j < k; ++j) mask.add(t.corner_vertex(first + j), doo_sabin_weight(k, (j - i + k) % k));
 }
 
 void boundary_point(const LevelView& level, Index edge, Index vertex, MaskBuilder& mask) {
