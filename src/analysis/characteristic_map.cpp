@@ -102,7 +102,7 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
   RefineOptions options = matrix.rules;
   options.levels = levels;
   const std::vector<StencilTable> tables = refine_stencils(ring.mesh, scheme, options);
-  const Scheme& placement = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
+  const Scheme& placement = layout_placement(scheme.split);
   RefineOptions linear;
   linear.levels = levels;
   const PolygonMesh layout = refine(ring.mesh, placement, linear);

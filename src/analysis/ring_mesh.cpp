@@ -7,6 +7,8 @@
 #include <tuple>
 
 #include "subdiv/core/error.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/refine/refine.h"
 
 namespace subdiv {
 
@@ -68,7 +70,77 @@ class GridPoints {
 
 }  // namespace
 
+namespace {
+
+// The dual of the quad layout with one more ring: a vertex per face (at its
+// centroid), a face per interior vertex (its faces in ring order).
+RingMesh dual_ring_mesh(const Configuration& configuration, int rings) {
+  if (configuration.kind != Configuration::Kind::interior)
+    throw InvalidInputError(configuration.name() +
+                            ": the dual split is analysed at extraordinary faces only (interior configurations)");
+  if (configuration.k < 3) throw InvalidInputError(configuration.name() + ": an extraordinary face needs k >= 3");
+  const RingMesh primal = ring_mesh(SplitRule::quad, configuration, rings + 1);
+  const MeshTopology t(primal.mesh);
+  RingMesh dual;
+  for (Index f = 0; f < t.face_count(); ++f) {
+    Vec3 centroid;
+    for (const Index v : t.face_vertices(f)) centroid += primal.mesh.positions[static_cast<std::size_t>(v)];
+    dual.mesh.positions.push_back((1.0 / t.face_size(f)) * centroid);
+  }
+  std::vector<Index> face;
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    if (t.vertex_kind(v) != VertexKind::interior) continue;
+    face.clear();
+    for (const Index c : t.vertex_corners(v)) face.push_back(t.corner_face(c));
+    if (v == primal.centre) dual.centre_face = dual.mesh.face_count();
+    dual.mesh.add_face(face);
+    dual.face_centres.push_back(primal.mesh.positions[static_cast<std::size_t>(v)]);
+  }
+  dual.centre = kInvalidIndex;
+  return dual;
+}
+
+void dual_placement(const LevelView& level, Index corner, MaskBuilder& mask) {
+  const MeshTopology& t = level.topology;
+  const Index f = t.corner_face(corner);
+  const double n = t.face_size(f);
+  mask.add(t.corner_vertex(corner), 0.5);
+  for (const Index v : t.face_vertices(f)) mask.add(v, 0.5 / n);
+}
+
+void dual_boundary_placement(const LevelView& level, Index edge, Index vertex, MaskBuilder& mask) {
+  mask.add(vertex, 0.75);
+  mask.add(level.topology.other_vertex(edge, vertex), 0.25);
+}
+
+}  // namespace
+
+const Scheme& layout_placement(SplitRule split) {
+  static const Scheme dual{"dual-placement", "", "", SplitRule::dual, false, nullptr, nullptr, nullptr, nullptr,
+                           dual_placement, dual_boundary_placement};
+  if (split == SplitRule::dual) return dual;
+  return *find_scheme(split == SplitRule::quad ? "bilinear" : "linear");
+}
+
+std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring) {
+  RefineOptions once;
+  once.levels = 1;
+  PolygonMesh child = refine(ring.mesh, layout_placement(split), once);
+  if (split == SplitRule::dual) {
+    const MeshTopology t(ring.mesh);
+    for (Index c = 0; c < t.corner_count(); ++c)  // child vertex c = corner point of corner c
+      child.positions[static_cast<std::size_t>(c)] =
+          0.5 * (ring.mesh.positions[static_cast<std::size_t>(t.corner_vertex(c))] +
+                 ring.face_centres[static_cast<std::size_t>(t.corner_face(c))]);
+  }
+  return child.positions;
+}
+
 RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int rings) {
+  if (split == SplitRule::dual) {
+    if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
+    return dual_ring_mesh(configuration, rings);
+  }
   const int k = configuration.k;
   const bool closed = configuration.kind == Configuration::Kind::interior;
   if (k < (closed ? 3 : 1))

@@ -16,12 +16,19 @@ namespace {
 
 constexpr double kLayoutTolerance = 1e-9;
 
-// The vertices of the faces within `rings` face rings of the centre, with
+// The vertices of the faces within `rings` face rings of the centre (a
+// vertex, or the dual split's centre face, whose vertices are ring 0), with
 // their ring numbers (-1 outside).
-std::vector<int> face_rings(const MeshTopology& topology, Index centre, int rings) {
+std::vector<int> face_rings(const MeshTopology& topology, const RingMesh& mesh, int rings) {
   std::vector<int> ring(static_cast<std::size_t>(topology.vertex_count()), -1);
-  ring[static_cast<std::size_t>(centre)] = 0;
-  std::vector<Index> frontier{centre};
+  std::vector<Index> frontier;
+  if (mesh.centre_face != kInvalidIndex) {
+    const auto face = topology.face_vertices(mesh.centre_face);
+    frontier.assign(face.begin(), face.end());
+  } else {
+    frontier.push_back(mesh.centre);
+  }
+  for (const Index v : frontier) ring[static_cast<std::size_t>(v)] = 0;
   for (int r = 1; r <= rings; ++r) {
     std::vector<Index> next;
     for (const Index v : frontier)
@@ -53,13 +60,9 @@ double angle_of(Vec3 p) {
 LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings,
                                                 const RefineOptions& rules) {
   if (rings < 1) throw InvalidInputError("subdivision matrix: rings must be >= 1, not " + std::to_string(rings));
-  if (scheme.split == SplitRule::dual)
-    throw InvalidInputError(std::string(scheme.name) +
-                            ": the analysis covers vertex configurations of the quad and triangle splits, not the "
-                            "dual split's extraordinary faces");
   const RingMesh ring = ring_mesh(scheme.split, configuration, ring_mesh_size(rings));
   const MeshTopology topology(ring.mesh);
-  const std::vector<int> ring_number = face_rings(topology, ring.centre, rings);
+  const std::vector<int> ring_number = face_rings(topology, ring, rings);
 
   // The neighbourhood, ordered by ring, then angle, then distance.
   std::vector<Index> coarse;
@@ -83,11 +86,8 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
   once.levels = 1;
   once.on_level = nullptr;
   const StencilTable table = refine_stencil_table(ring.mesh, scheme, once);
-  const Scheme& placement = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
-  RefineOptions linear;
-  linear.levels = 1;
-  const PolygonMesh layout_child = refine(ring.mesh, placement, linear);
-  std::vector<Index> all_child(static_cast<std::size_t>(layout_child.vertex_count()));
+  const std::vector<Vec3> layout_child = child_layout(scheme.split, ring);
+  std::vector<Index> all_child(layout_child.size());
   std::iota(all_child.begin(), all_child.end(), 0);
 
   LocalSubdivisionMatrix m;
@@ -100,7 +100,7 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
     const Vec3 p = positions[static_cast<std::size_t>(coarse[static_cast<std::size_t>(a)])];
     m.layout.push_back(p);
     m.ring_of.push_back(ring_number[static_cast<std::size_t>(coarse[static_cast<std::size_t>(a)])]);
-    const Index child = vertex_at(layout_child.positions, all_child, 0.5 * p);
+    const Index child = vertex_at(layout_child, all_child, 0.5 * p);
     if (child == kInvalidIndex) throw InvalidInputError(configuration.name() + ": no child vertex at a neighbourhood point");
     const auto vertices = table.row_vertices(child);
     const auto weights = table.row_weights(child);

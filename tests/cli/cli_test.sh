@@ -108,7 +108,13 @@ printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nt crease 2/1/0 0 1 3\n' >
 run refine-doo-sabin-crease 1 refine "$work/ds_crease.obj" -s doo-sabin -o "$work/x.obj"
 stderr_one_line refine-doo-sabin-crease && stderr_has refine-doo-sabin-crease "ds_crease.obj:6: doo-sabin has no crease rules"
 run limit-doo-sabin 1 limit "$meshes/cube.obj" -s doo-sabin -o "$work/x.obj" && stderr_one_line limit-doo-sabin
-run analyze-doo-sabin 1 analyze -s doo-sabin -k 3..5 && stderr_one_line analyze-doo-sabin
+run analyze-doo-sabin 0 analyze -s doo-sabin -k 3..8 && stdout_has analyze-doo-sabin "extraordinary face of k sides"
+for k in 3 5 8; do
+  grep -qE "^interior k=$k +$((4 * k)) +1 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass ||
+    fail "analyze doo-sabin: no C1 row with 1/2, 1/2, 1/4 for k=$k"
+done
+run analyze-doo-sabin-boundary 1 analyze -s doo-sabin --boundary -k 2 && stderr_one_line analyze-doo-sabin-boundary &&
+  stderr_has analyze-doo-sabin-boundary "extraordinary faces only"
 run adaptive-doo-sabin 1 adaptive "$meshes/cube.obj" -s doo-sabin --eps 0.1 -o "$work/x.obj" && stderr_one_line adaptive-doo-sabin
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"

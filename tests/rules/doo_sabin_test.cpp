@@ -8,6 +8,8 @@
 #include <numbers>
 #include <random>
 
+#include "subdiv/analysis/analyze.h"
+#include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/validation.h"
 #include "subdiv/refine/refine.h"
@@ -232,6 +234,37 @@ TEST(DooSabin, RefusesSharpFeaturesWithTheirLine) {
   mesh.tags.creases.clear();
   mesh.tags.holes.push_back(2);
   EXPECT_THROW(refine(mesh, doo_sabin_scheme(), levels(1)), InvalidInputError);
+}
+
+// The analysis at an extraordinary face of k sides, read off the real
+// rules: the neighbourhood of the k-gon and its ring of faces (4k vertices)
+// is invariant, the spectrum leads with 1, 1/2, 1/2, 1/4, and Reif's
+// criterion holds (the survey: Doo-Sabin is C1).
+TEST(DooSabin, AnalysisAtExtraordinaryFacesIsC1) {
+  for (int k = 3; k <= 12; ++k) {
+    const ConfigurationAnalysis a = analyze(doo_sabin_scheme(), {Configuration::Kind::interior, k, CornerType::convex});
+    ASSERT_TRUE(a.matrix.invariant) << k << ": " << a.matrix.invariance_note;
+    EXPECT_EQ(a.matrix.rings, 1) << k;
+    EXPECT_EQ(a.matrix.S.rows(), 4 * k) << k;
+    ASSERT_EQ(a.leading.size(), 4u);
+    const double expected[] = {1.0, 0.5, 0.5, 0.25};
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(a.leading[static_cast<std::size_t>(i)].real(), expected[i], 1e-12) << k << " " << i;
+      EXPECT_NEAR(a.leading[static_cast<std::size_t>(i)].imag(), 0.0, 1e-12) << k << " " << i;
+    }
+    EXPECT_TRUE(a.eigenvalue_condition) << k << ": " << a.reason;
+    EXPECT_EQ(a.verdict, SmoothnessVerdict::c1) << k << ": " << a.reason;
+    // The limit mask is affine (sums to 1) and shared alike by the k-gon's
+    // vertices (the rotation maps it to itself).
+    ASSERT_TRUE(a.limit_mask.has_value());
+    EXPECT_NEAR(a.limit_mask->sum(), 1.0, 1e-12) << k;
+    for (int i = 1; i < k; ++i) EXPECT_NEAR((*a.limit_mask)[i], (*a.limit_mask)[0], 1e-12) << k << " " << i;
+  }
+}
+
+// Boundary configurations have no dual layout: refused with a clear error.
+TEST(DooSabin, AnalysisRefusesBoundaryFaces) {
+  EXPECT_THROW(analyze(doo_sabin_scheme(), {Configuration::Kind::boundary, 3, CornerType::convex}), InvalidInputError);
 }
 
 }  // namespace

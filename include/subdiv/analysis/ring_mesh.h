@@ -12,19 +12,46 @@
 
 #include "subdiv/analysis/configuration.h"
 #include "subdiv/mesh/polygon_mesh.h"
+#include "subdiv/rules/scheme.h"
 #include "subdiv/topology/split.h"
 
 namespace subdiv {
 
 struct RingMesh {
   PolygonMesh mesh;  ///< positions are the planar layout
-  Index centre = 0;
+  Index centre = 0;  ///< the centre vertex (primal splits)
+  /// Dual split: the centre is a face, the k-gon at the origin, and `centre`
+  /// is kInvalidIndex.
+  Index centre_face = kInvalidIndex;
+  /// Dual split: per face, the layout point it surrounds (the vertex of the
+  /// quad layout it is dual to; not its centroid where a face straddles two
+  /// sectors).
+  std::vector<Vec3> face_centres;
 };
 
 /// The configuration's mesh with `rings` rings of faces around the centre.
 /// Corners carry an infinitely sharp corner tag of the configuration's type
 /// and angle on the centre. Throws InvalidInputError for k < 1 (interior:
 /// k < 3), rings < 1, or a split without a grid layout.
+///
+/// For the dual split the configuration is an extraordinary face: "interior
+/// k" is a k-gon surrounded by `rings` rings of quads, laid out as the dual
+/// of the quad layout around a vertex of valence k (a vertex at each face
+/// centroid of that layout, a face around each of its interior vertices).
+/// Only interior configurations have a dual layout.
 RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int rings);
+
+/// A scheme with the split's topology and linear masks: bilinear, linear, or
+/// for the dual split corner points at (v + centroid(f)) / 2. Refining a
+/// layout with it gives the child levels' faces (and, for the primal splits,
+/// the child_layout positions).
+const Scheme& layout_placement(SplitRule split);
+
+/// Positions of the ring mesh's child vertices one level down such that the
+/// child of layout point p is at p / 2 (within a sector the layout is
+/// linear): the split's own placement for the primal splits; for the dual
+/// split the corner point of corner v of face f at (v + face_centres[f]) / 2.
+/// The analysis identifies a neighbourhood with its image by them.
+std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring);
 
 }  // namespace subdiv
