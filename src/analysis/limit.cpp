@@ -153,7 +153,7 @@ int levels_to_resolve(const PolygonMesh& mesh, const Scheme& scheme, int cap) {
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options) {
   if (options.isolation_levels < 0 || options.max_resolve_levels < 0)
     throw InvalidInputError("limit: refinement levels must be >= 0");
-  if (scheme.split == SplitRule::dual)
+  if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) +
                             ": limit positions need the analysis of the dual split's configurations, which "
                             "it does not cover yet");

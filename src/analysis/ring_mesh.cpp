@@ -137,6 +137,9 @@ std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring) {
 }
 
 RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int rings) {
+  if (split == SplitRule::midedge)
+    throw InvalidInputError("the midedge split repeats its configurations only every two steps; the analysis reads "
+                            "one step");
   if (split == SplitRule::dual) {
     if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
     return dual_ring_mesh(configuration, rings);

@@ -122,7 +122,7 @@ int max_valence(const PolygonMesh& mesh) {
 }  // namespace
 
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
-  if (scheme.split == SplitRule::dual)
+  if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) +
                             ": the depth needs vertex-to-limit distances, which the dual split's vertices lack here; "
                             "the paper's bound (doo_sabin_bound in subdiv/depth/depth_bound.h) takes the second "

@@ -249,9 +249,9 @@ void run_with_threads(int threads, Body&& body) {
 
 namespace {
 
-// The dual split has no rules for sharp features, holes or non-manifold
-// elements: refuse them, naming the tag's line.
-void check_dual_refinable(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+// The dual and midedge splits have no rules for sharp features, holes or
+// non-manifold elements: refuse them, naming the tag's line.
+void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                           const SourceLines* lines) {
   const std::string name(scheme.name);
   auto where = [&](const std::vector<std::uint32_t> SourceLines::*tag_lines, std::size_t i) {
@@ -283,7 +283,7 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
   if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
   if (boundary_of(mesh, options) == BoundaryInterpolation::none)
     throw InvalidInputError("boundary interpolation 'none' is not supported; use edge-only or edge-and-corner");
-  if (scheme.split == SplitRule::dual) check_dual_refinable(mesh, scheme, options, lines);
+  if (!is_primal(scheme.split)) check_no_sharp_features(mesh, scheme, options, lines);
   const std::string path = lines ? lines->path : std::string();
   try {
     check_face_arrays(mesh);

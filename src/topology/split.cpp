@@ -11,7 +11,7 @@ namespace subdiv {
 
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f) {
   if (rule == SplitRule::quad) return {parent.face_first_corner(f), parent.face_first_corner(f) + parent.face_size(f)};
-  if (rule == SplitRule::dual) return {f, f + 1};
+  if (rule == SplitRule::dual || rule == SplitRule::midedge) return {f, f + 1};
   return {4 * f, 4 * f + 4};
 }
 
@@ -20,6 +20,7 @@ const char* to_string(SplitRule r) {
     case SplitRule::quad: return "quad split (QP, arity 2)";
     case SplitRule::triangle: return "triangle split (TP, arity 2)";
     case SplitRule::dual: return "dual split (QD, arity 2)";
+    case SplitRule::midedge: return "midedge split (QD, arity sqrt 2)";
   }
   return "?";
 }
@@ -47,7 +48,7 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
   out.face_varying_propagate_corners = in.face_varying_propagate_corners;
   out.face_varying_propagate_corners_set = in.face_varying_propagate_corners_set;
   out.other = in.other;
-  if (map.rule == SplitRule::dual) return;  // no sharp features there (check_refinable)
+  if (!is_primal(map.rule)) return;  // no sharp features there (check_refinable)
 
   for (const CreaseTag& c : in.creases) {
     const Index e = topology.find_edge(c.v0, c.v1);
@@ -98,7 +99,8 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
   detail::require_edges(topology);
   SplitMap map = rule == SplitRule::quad       ? detail::quad_split(topology, child)
                  : rule == SplitRule::triangle ? detail::triangle_split(topology, child)
-                                               : detail::dual_split(topology, child);
+                 : rule == SplitRule::dual     ? detail::dual_split(topology, child)
+                                               : detail::midedge_split(topology, child);
   detail::propagate_tags(parent, topology, map, child_end_sharpness, child);
   // Vertex channels are the masks' to fill; face-varying ones split here.
   child.vertex_channels.clear();
@@ -108,7 +110,8 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
     FaceVaryingChannel& out = child.face_varying_channels[i];
     if (rule == SplitRule::quad) detail::quad_split_face_varying(topology, in, out);
     else if (rule == SplitRule::triangle) detail::triangle_split_face_varying(topology, in, out);
-    else detail::dual_split_face_varying(topology, map, child, in, out);
+    else if (rule == SplitRule::dual) detail::dual_split_face_varying(topology, map, child, in, out);
+    else detail::midedge_split_face_varying(topology, child, in, out);
   }
   return map;
 }

@@ -11,6 +11,7 @@ double child_sharpness(double s);
 SplitMap quad_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap triangle_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap dual_split(const MeshTopology& topology, PolygonMesh& child);
+SplitMap midedge_split(const MeshTopology& topology, PolygonMesh& child);
 
 /// Face-varying values linear within each face, for the child's corners.
 void quad_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);
@@ -20,6 +21,9 @@ void triangle_split_face_varying(const MeshTopology& topology, const FaceVarying
 /// end values in the edge's face; `child` holds the split's faces.
 void dual_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
                              const FaceVaryingChannel& in, FaceVaryingChannel& out);
+/// Midedge split: a child vertex's value is its edge's midpoint value.
+void midedge_split_face_varying(const MeshTopology& topology, const PolygonMesh& child, const FaceVaryingChannel& in,
+                                FaceVaryingChannel& out);
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
                     std::span<const double> child_end_sharpness, PolygonMesh& child);

@@ -116,6 +116,10 @@ done
 run analyze-doo-sabin-boundary 1 analyze -s doo-sabin --boundary -k 2 && stderr_one_line analyze-doo-sabin-boundary &&
   stderr_has analyze-doo-sabin-boundary "extraordinary faces only"
 run adaptive-doo-sabin 1 adaptive "$meshes/cube.obj" -s doo-sabin --eps 0.1 -o "$work/x.obj" && stderr_one_line adaptive-doo-sabin
+run refine-midedge 0 refine "$meshes/cube.obj" -s midedge -l 2 -o "$work/me.obj" --stats
+stdout_has refine-midedge "level 1: 12 vertices, 14 faces" && stdout_has refine-midedge "level 2: 24 vertices, 26 faces"
+run refine-midedge-open 1 refine "$meshes/l_shape.obj" -s midedge -o "$work/x.obj" && stderr_one_line refine-midedge-open
+run analyze-midedge 1 analyze -s midedge -k 4 && stderr_one_line analyze-midedge && stderr_has analyze-midedge "every two steps"
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold

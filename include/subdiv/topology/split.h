@@ -10,6 +10,9 @@
 //     a face per parent face, edge and vertex; child vertices are numbered
 //     [corner points | boundary points, two per boundary edge]
 //     (src/topology/dual_split.cpp).
+//   midedge split (QD, arity sqrt 2): a child vertex per edge, a face per
+//     parent face and vertex; child vertices are numbered as the edges
+//     (src/topology/midedge_split.cpp). Closed meshes only.
 //
 // The child is a complete PolygonMesh (faces, tags, face-varying indices);
 // its positions and vertex channels are left for a scheme's masks to fill.
@@ -22,7 +25,12 @@
 
 namespace subdiv {
 
-enum class SplitRule { quad, triangle, dual };
+enum class SplitRule { quad, triangle, dual, midedge };
+
+/// The primal splits keep the parent's vertices (as vertex points) and its
+/// sharp features; the analysis' vertex configurations, limit positions,
+/// depth and adaptive refinement are written for them.
+constexpr bool is_primal(SplitRule r) { return r == SplitRule::quad || r == SplitRule::triangle; }
 
 const char* to_string(SplitRule);
 
@@ -49,7 +57,7 @@ struct SplitMap {
 
 /// The child faces of parent face f, [first, last): the quad split makes one
 /// per corner (child face = parent corner), the triangle split 4f .. 4f+3,
-/// the dual split one (child face f, its F-face).
+/// the dual and midedge splits one (child face f, its F-face).
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f);
 
 /// The child level's faces, tags (crease and corner sharpness decremented by

@@ -1,0 +1,102 @@
+#include "subdiv/rules/midedge.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "subdiv/core/error.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/mesh/validation.h"
+#include "subdiv/refine/refine.h"
+#include "support/stencil_rows.h"
+#include "support/test_meshes.h"
+
+namespace subdiv {
+namespace {
+
+RefineOptions levels(int n) {
+  RefineOptions options;
+  options.levels = n;
+  return options;
+}
+
+// A closed mesh of triangles and quads: the cube with one face split into
+// two triangles, positions jittered.
+PolygonMesh closed_mixed_mesh() {
+  PolygonMesh cube = test::cube();
+  PolygonMesh mesh;
+  mesh.positions = cube.positions;
+  for (Index f = 0; f < cube.face_count(); ++f) {
+    const auto q = cube.face(f);
+    if (f == 0) {
+      mesh.add_face({q[0], q[1], q[2]});
+      mesh.add_face({q[0], q[2], q[3]});
+    } else {
+      mesh.add_face({q[0], q[1], q[2], q[3]});
+    }
+  }
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  for (Vec3& p : mesh.positions) p += Vec3{jitter(random), jitter(random), jitter(random)};
+  return mesh;
+}
+
+TEST(Midedge, OneStepMakesAVertexPerEdgeAndAFacePerFaceAndVertex) {
+  const PolygonMesh mesh = closed_mixed_mesh();
+  const MeshTopology t(mesh);
+  const PolygonMesh child = refine(mesh, midedge_scheme(), levels(1));
+  EXPECT_EQ(child.vertex_count(), t.edge_count());
+  EXPECT_EQ(child.face_count(), mesh.face_count() + mesh.vertex_count());
+  const MeshTopology ct(child);
+  EXPECT_TRUE(validate(child, ct).ok());
+  for (Index v = 0; v < ct.vertex_count(); ++v) EXPECT_EQ(ct.valence(v), 4) << v;
+  for (Index e = 0; e < t.edge_count(); ++e) {
+    const auto [a, b] = t.edge_vertices(e);
+    EXPECT_NEAR(norm(child.positions[static_cast<std::size_t>(e)] - 0.5 * (mesh.positions[a] + mesh.positions[b])), 0.0,
+                1e-15);
+  }
+}
+
+// Two steps are a Doo-Sabin type scheme (the survey, section 4.2): a vertex
+// per parent corner at v/2 + (prev + next)/4, and the dual split's faces (a
+// face per parent face, edge and vertex). Compared order-independently with
+// that rule computed here.
+TEST(Midedge, TwoStepsAreACornerCuttingDualScheme) {
+  const PolygonMesh mesh = closed_mixed_mesh();
+  const MeshTopology t(mesh);
+  const PolygonMesh twice = refine(mesh, midedge_scheme(), levels(2));
+  EXPECT_EQ(twice.vertex_count(), mesh.corner_count());
+  EXPECT_EQ(twice.face_count(), mesh.face_count() + t.edge_count() + mesh.vertex_count());
+  std::vector<bool> used(twice.positions.size(), false);
+  for (Index c = 0; c < t.corner_count(); ++c) {
+    const Vec3 expected = 0.5 * mesh.positions[t.corner_vertex(c)] +
+                          0.25 * (mesh.positions[t.corner_vertex(t.corner_prev(c))] +
+                                  mesh.positions[t.corner_vertex(t.corner_next(c))]);
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < twice.positions.size(); ++i)
+      if (norm(twice.positions[i] - expected) < norm(twice.positions[nearest] - expected)) nearest = i;
+    EXPECT_LT(norm(twice.positions[nearest] - expected), 1e-14) << c;
+    EXPECT_FALSE(used[nearest]) << c;
+    used[nearest] = true;
+  }
+}
+
+TEST(Midedge, StencilRowsSumToOne) {
+  const std::vector<StencilTable> tables = refine_stencils(closed_mixed_mesh(), midedge_scheme(), levels(3));
+  for (const StencilTable& table : tables)
+    for (Index r = 0; r < table.row_count(); ++r) {
+      double sum = 0.0;
+      for (const auto& [v, w] : test::merged_row(table, r)) sum += w;
+      EXPECT_NEAR(sum, 1.0, 1e-15);
+    }
+}
+
+TEST(Midedge, RefusesBoundariesAndTags) {
+  EXPECT_THROW(refine(test::quad_grid(2, 2), midedge_scheme(), levels(1)), TopologyError);
+  PolygonMesh cube = test::cube();
+  cube.tags.corners.push_back({0, kInfiniteSharpness, CornerType::unspecified, std::nullopt});
+  EXPECT_THROW(refine(cube, midedge_scheme(), levels(1)), InvalidInputError);
+}
+
+}  // namespace
+}  // namespace subdiv
