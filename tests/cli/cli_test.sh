@@ -268,6 +268,17 @@ run ps-analyze 0 analyze -s loop --boundary -k 4..9 --boundary-rules piecewise-s
 run ps-analyze-corner 0 analyze -s catmull-clark --corner concave --angle 240 -k 2..4 --boundary-rules piecewise-smooth
 stdout_has ps-analyze-corner "concave corner k=3 alpha=240deg"
 run ps-limit 0 limit "$work/l_in.obj" -s catmull-clark --boundary-rules piecewise-smooth --normals -o "$work/l_limit.obj"
+# The bundled L mesh (convex corners and a tagged concave one): every vertex
+# gets a unit normal, and no warning; without flatness the concave corner
+# folds, has no normal, and one warning line counts it.
+run ps-limit-l 0 limit "$meshes/l_shape.obj" -s catmull-clark --boundary-rules piecewise-smooth --normals \
+  -o "$work/l_shape_limit.obj" && [ ! -s "$work/err" ] && pass || fail "limit piecewise-smooth L: $(cat "$work/err")"
+[ "$(grep -c '^vn ' "$work/l_shape_limit.obj")" -eq 21 ] &&
+  awk '/^vn /{ if (($2^2 + $3^2 + $4^2 - 1)^2 > 1e-12) bad = 1 } END{exit bad}' "$work/l_shape_limit.obj" &&
+  pass || fail "limit piecewise-smooth L: expected 21 unit vn lines"
+run ps-limit-fold 0 limit "$meshes/l_shape.obj" -s catmull-clark --boundary-rules piecewise-smooth --flatness 0 \
+  --normals -o "$work/l_shape_fold.obj" && stderr_one_line ps-limit-fold &&
+  stderr_has ps-limit-fold "warning: 1 vertices have no limit normal"
 
 # Every shared mesh: exit 0 or 1, never a crash, and a failure is one line.
 if [ -d "$shared" ]; then

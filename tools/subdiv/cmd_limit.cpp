@@ -80,6 +80,15 @@ int run_limit(const LimitCommandOptions& opt) {
                  "subdiv: warning: %d vertices match no canonical configuration (darts, non-manifold or unresolved "
                  "semi-sharp features): written at their position after %d levels, not at the limit\n",
                  limit.approximated, limit.levels_refined);
+  if (opt.normals) {
+    const auto undefined = std::count_if(limit.normals.begin(), limit.normals.end(),
+                                         [](const Vec3& n) { return !(norm(n) > 0.0); });
+    if (undefined > 0)
+      std::fprintf(stderr,
+                   "subdiv: warning: %ld vertices have no limit normal (no tangent plane there, or no tangent "
+                   "masks for their configuration): written as vn 0 0 0\n",
+                   static_cast<long>(undefined));
+  }
   const bool closed = std::any_of(limit.sources.begin(), limit.sources.end(),
                                   [](LimitSource s) { return s == LimitSource::closed_form; });
   std::printf("wrote %s: %d vertices at their %s limit positions (%s masks)%s\n", opt.output.c_str(),

@@ -19,8 +19,19 @@
 //   then the ring counter-clockwise from the first edge), so it must look
 //   like that ring: faces of the split's kind around a smooth interior
 //   vertex, a boundary vertex, or a corner. A vertex on an interior crease
-//   takes the boundary configuration's mask along the crease (the crease and
-//   boundary rules are the same curve rules). Vertices that match no
+//   takes the masks of one of its sectors (the first with two or more
+//   faces) as a boundary configuration with that sector's faces: each
+//   sector evolves as a boundary fan, the crease and boundary rules being
+//   the same curve rules. The position reads the curve only; the normal is
+//   that sector's. An infinitely sharp corner keeps its position; its
+//   tangents are the left eigenvectors of the eigenvalue 1/2 (the two
+//   boundary curves) of the corner configuration with its (first) sector's
+//   faces, and under the piecewise-smooth rules its sector angle (the
+//   cache is keyed on it); its normal is defined where that pair 1/2 is
+//   subdominant (lambda_1 = lambda_2 = 1/2 > |lambda_3|: convex corners,
+//   concave ones with the flatness modification), else zero (the standard
+//   rules' and the unflattened concave corners, which flip or fold).
+//   Vertices that match no
 //   canonical ring (darts, non-manifold vertices, semi-sharp features not yet
 //   resolved) keep their refined position and are counted.
 
@@ -56,9 +67,11 @@ enum class LimitSource : std::uint8_t { closed_form, generic, refined_position }
 struct LimitResult {
   std::vector<Vec3> positions;  ///< one per input vertex
   std::vector<Vec3> normals;    ///< unit normals (empty unless asked; zero where undefined)
-  /// Closed-form route, with normals asked: the two tangents per vertex
-  /// (tangent1 x tangent2 along the normal; lengths by each formula's
-  /// convention), zero where the vertex took another route.
+  /// With normals asked: the two tangents per vertex (tangent1 x tangent2
+  /// along the faces' side; lengths by each formula's convention, for the
+  /// generic masks unit masks, at corners the two boundary curves' tangents,
+  /// p_first - p and -+(p_last - p)), zero where the vertex kept its refined
+  /// position or a corner has no tangent masks.
   std::vector<Vec3> tangents1, tangents2;
   std::vector<LimitSource> sources;  ///< one per input vertex
   /// Vertices left at their refined position (not the limit).
