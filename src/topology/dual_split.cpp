@@ -19,6 +19,9 @@
 
 #include <algorithm>
 
+#include <tbb/parallel_for.h>
+
+#include "../core/large_buffers.h"
 #include "split_detail.h"
 #include "subdiv/core/error.h"
 
@@ -47,40 +50,70 @@ SplitMap dual_split(const MeshTopology& topo, PolygonMesh& child) {
     return map.edge_points + 2 * boundary_rank[static_cast<std::size_t>(e)] + (topo.edge_vertices(e)[0] == v ? 0 : 1);
   };
 
-  child.positions.assign(static_cast<std::size_t>(map.child_vertex_count), Vec3{});
-  child.face_offsets.assign(1, 0);
-  child.face_indices.clear();
-  child.face_indices.reserve(static_cast<std::size_t>(3 * nc + 4 * ne));
-  auto close_face = [&] { child.face_offsets.push_back(static_cast<Index>(child.face_indices.size())); };
-
-  for (Index f = 0; f < nf; ++f) {
-    const Index first = topo.face_first_corner(f);
-    for (Index c = first; c < first + topo.face_size(f); ++c) child.face_indices.push_back(c);
-    close_face();
-  }
-  for (Index e = 0; e < ne; ++e) {
-    const auto sides = topo.edge_corners(e);
-    const Index ca = sides[0], cb = sides.size() == 2 ? sides[1] : kInvalidIndex;
-    // Side ca runs a -> b in its face; the E-face runs against it.
-    const Index a = topo.corner_vertex(ca), b = topo.corner_vertex(topo.corner_next(ca));
-    const Index quad[4] = {topo.corner_next(ca), ca, cb != kInvalidIndex ? topo.corner_next(cb) : boundary_point(e, a),
-                           cb != kInvalidIndex ? cb : boundary_point(e, b)};
-    child.face_indices.insert(child.face_indices.end(), quad, quad + 4);
-    close_face();
-  }
-  for (Index v = 0; v < nv; ++v) {
-    const auto corners = topo.vertex_corners(v);
+  // Face sizes first, so that every face can be written in parallel.
+  auto v_face_size = [&](Index v) -> Index {
+    const Index corners = topo.vertex_face_count(v);
     const bool boundary = topo.vertex_kind(v) == VertexKind::boundary;
     // An interior vertex of valence 2 leaves a 2-gon: its E-faces already
     // share that edge.
-    if (corners.empty() || (!boundary && corners.size() < 3)) continue;
-    // Counter-clockwise around v: boundary edge e_0, faces, boundary edge e_k.
-    const auto edges = topo.vertex_edges(v);
-    if (boundary) child.face_indices.push_back(boundary_point(edges.front(), v));
-    child.face_indices.insert(child.face_indices.end(), corners.begin(), corners.end());
-    if (boundary) child.face_indices.push_back(boundary_point(edges.back(), v));
-    close_face();
+    if (corners == 0 || (!boundary && corners < 3)) return 0;
+    return corners + (boundary ? 2 : 0);
+  };
+  std::vector<Index> v_face_offset(static_cast<std::size_t>(nv) + 1, 0);
+  Index v_faces = 0;
+  for (Index v = 0; v < nv; ++v) {
+    const Index n = v_face_size(v);
+    v_face_offset[static_cast<std::size_t>(v) + 1] = v_face_offset[static_cast<std::size_t>(v)] + n;
+    v_faces += n > 0;
   }
+  const Index e_first = nc, v_first = nc + 4 * ne;  // where E- and V-faces start in face_indices
+  const auto child_faces = static_cast<std::size_t>(nf + ne + v_faces);
+  detail::assign_large(child.positions, static_cast<std::size_t>(map.child_vertex_count), Vec3{});
+  detail::assign_large(child.face_offsets, child_faces + 1);
+  detail::assign_large(child.face_indices, static_cast<std::size_t>(v_first + v_face_offset.back()));
+
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f) {
+      const Index first = topo.face_first_corner(f);
+      child.face_offsets[static_cast<std::size_t>(f)] = first;
+      for (Index c = first; c < first + topo.face_size(f); ++c) child.face_indices[static_cast<std::size_t>(c)] = c;
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index e = range.begin(); e != range.end(); ++e) {
+      const auto sides = topo.edge_corners(e);
+      const Index ca = sides[0], cb = sides.size() == 2 ? sides[1] : kInvalidIndex;
+      // Side ca runs a -> b in its face; the E-face runs against it.
+      const Index a = topo.corner_vertex(ca), b = topo.corner_vertex(topo.corner_next(ca));
+      Index* q = child.face_indices.data() + e_first + 4 * e;
+      q[0] = topo.corner_next(ca);
+      q[1] = ca;
+      q[2] = cb != kInvalidIndex ? topo.corner_next(cb) : boundary_point(e, a);
+      q[3] = cb != kInvalidIndex ? cb : boundary_point(e, b);
+      child.face_offsets[static_cast<std::size_t>(nf + e)] = e_first + 4 * e;
+    }
+  });
+  // V-faces are numbered in vertex order among the vertices that have one.
+  std::vector<Index> v_face_number(static_cast<std::size_t>(nv), kInvalidIndex);
+  for (Index v = 0, n = nf + ne; v < nv; ++v)
+    if (v_face_offset[static_cast<std::size_t>(v) + 1] > v_face_offset[static_cast<std::size_t>(v)])
+      v_face_number[static_cast<std::size_t>(v)] = n++;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const Index number = v_face_number[static_cast<std::size_t>(v)];
+      if (number == kInvalidIndex) continue;
+      const Index offset = v_first + v_face_offset[static_cast<std::size_t>(v)];
+      child.face_offsets[static_cast<std::size_t>(number)] = offset;
+      Index* out = child.face_indices.data() + offset;
+      // Counter-clockwise around v: boundary edge e_0, faces, boundary edge e_k.
+      const auto edges = topo.vertex_edges(v);
+      const bool boundary = topo.vertex_kind(v) == VertexKind::boundary;
+      if (boundary) *out++ = boundary_point(edges.front(), v);
+      for (const Index c : topo.vertex_corners(v)) *out++ = c;
+      if (boundary) *out++ = boundary_point(edges.back(), v);
+    }
+  });
+  child.face_offsets[child_faces] = static_cast<Index>(child.face_indices.size());
   return map;
 }
 
