@@ -2,8 +2,9 @@
 # Installs what is missing, builds, and runs subdiv on the bundled meshes:
 # inspects each one, converts it to PLY and OFF, refines it with
 # Catmull-Clark (and the triangle meshes with Loop), and moves its vertices
-# to their limit positions; then analyses Loop and Catmull-Clark at valences
-# 3..8 with pictures, refines the L-shaped patch with the standard and the
+# to their limit positions; then subdivides the cube and the tetrahedron with
+# every surface scheme (the survey's comparison), analyses Loop,
+# Catmull-Clark, the Butterfly schemes and Doo-Sabin with pictures, refines the L-shaped patch with the standard and the
 # piecewise-smooth boundary rules, and refines Spot to an accuracy (a priori
 # depth, adaptive refinement). Results under out/.
 set -euo pipefail
@@ -25,7 +26,13 @@ for mesh in data/meshes/*.obj; do
   "$subdiv" refine "$mesh" -s catmull-clark -l 2 -o "out/${name}_catmull_clark2.obj"
   "$subdiv" limit "$mesh" -s catmull-clark --normals -o "out/${name}_catmull_clark_limit.obj"
 done
-for scheme in loop catmull-clark; do
+echo "== the cube and the tetrahedron with every surface scheme (4 levels)"
+for mesh in cube tetrahedron; do
+  for scheme in catmull-clark loop butterfly modified-butterfly doo-sabin midedge; do
+    "$subdiv" refine "data/meshes/$mesh.obj" -s "$scheme" --triangulate -l 4 -o "out/${mesh}_${scheme}4.obj"
+  done
+done
+for scheme in loop catmull-clark butterfly modified-butterfly doo-sabin; do
   echo "== subdiv analyze -s $scheme -k 3..8"
   "$subdiv" analyze -s "$scheme" -k 3..8 --plot-spectrum "out/${scheme}_spectrum.svg" \
     --plot-charmap 5 "out/${scheme}_charmap5.png"
