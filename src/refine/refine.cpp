@@ -37,9 +37,11 @@ struct ParentLevel {
   const MeshTopology& topology;
   const LevelCreasing& creasing;
   std::span<const double> sector_angle;  ///< piecewise-smooth rules only
+  SchemeParameters parameters;
   // The masks' views, built once per level rather than per child vertex.
-  LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle};
-  LevelView below{topology, creasing.edge_sharpness, 1.0, sector_angle, creasing.child_edge_sharpness};  // Chaikin: per edge end
+  LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle, {}, parameters};
+  LevelView below{topology, creasing.edge_sharpness, 1.0, sector_angle, creasing.child_edge_sharpness,  // Chaikin: per edge end
+                  parameters};
   const LevelView& view() const { return here; }
   const LevelView& child_view() const { return below; }  // one level down
 };
@@ -125,7 +127,7 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const
     level.child.tags.crease_method_set = true;
   }
   level.flatness = detail::flatness_sites(scheme, topology, creasing, sector_angle, level.map, options);
-  fn(ParentLevel{parent, topology, creasing, sector_angle}, level);
+  fn(ParentLevel{parent, topology, creasing, sector_angle, scheme.parameters}, level);
   return level;
 }
 

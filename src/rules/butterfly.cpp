@@ -6,8 +6,8 @@
 // 1990): the edge point of edge (a, b) with opposite vertices c, d and the
 // four "wing" vertices e1..e4 across the other edges of the two triangles is
 //   1/2 (a + b) + 2w (c + d) - w (e1 + e2 + e3 + e4),
-// at every valence, with tension w = 1/16 (cubic precision on regular
-// meshes). The rule needs both triangles and all four wings; where the
+// at every valence, with tension w (SchemeParameters::tension; 1/16, the
+// default, gives cubic precision on regular meshes). The rule needs both triangles and all four wings; where the
 // stencil is cut by a boundary or a crease, and along creases, the modified
 // Butterfly's rules below are used (the 1990 paper has no boundary rules).
 //
@@ -213,7 +213,7 @@ void butterfly_edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBu
   if (rule == EdgeRule::crease || level.topology.edge_face_count(e) != 2) return crease_edge_point(level, e, mask);
   const auto [a, b] = level.topology.edge_vertices(e);
   const bool on_crease = detail::sharp_edge_count(level, a, e) >= 2 || detail::sharp_edge_count(level, b, e) >= 2;
-  if (!on_crease && add_eight_point(level, e, kButterflyTension, mask)) return;
+  if (!on_crease && add_eight_point(level, e, level.parameters.tension, mask)) return;
   modified_edge_point(level, e, mask);
 }
 
@@ -224,10 +224,11 @@ void interpolating_vertex_point(const LevelView&, Index v, VertexRule, MaskBuild
 const Scheme& butterfly_scheme() {
   static const Scheme scheme{
       "butterfly",
-      "interpolating, triangle split, triangle meshes; the 8-point rule, tension w = 1/16; C1 on regular meshes",
+      "interpolating, triangle split, triangle meshes; the 8-point rule, tension w (default 1/16); C1 on regular meshes",
       "N. Dyn, D. Levin, J. A. Gregory: A butterfly subdivision scheme for surface interpolation with tension "
       "control, ACM Transactions on Graphics 9(2), 1990",
-      SplitRule::triangle, true, nullptr, butterfly_edge_point, interpolating_vertex_point, nullptr};
+      SplitRule::triangle, true, nullptr, butterfly_edge_point, interpolating_vertex_point, nullptr, nullptr,
+      nullptr, SchemeParameters{kButterflyTension}, true};
   return scheme;
 }
 

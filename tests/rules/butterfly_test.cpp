@@ -222,6 +222,33 @@ TEST(Butterfly, RegularRuleReproducesCubics) {
   }
 }
 
+// The tension is a parameter of `butterfly` (Dyn, Levin and Gregory's w):
+// the regular rule puts 2w on the opposite vertices and -w on the wings;
+// any w keeps linear functions (the weights still sum to 1), but only
+// w = 1/16 reproduces the cubics, and w = 0 is the linear scheme.
+TEST(Butterfly, TensionIsAParameter) {
+  const PolygonMesh grid = test::triangle_grid(6, 6);
+  const MeshTopology t(grid);
+  for (const double w : {0.0, 0.03, 0.1}) {
+    Scheme scheme = butterfly_scheme();
+    scheme.parameters.tension = w;
+    const StencilTable table = refine_stencils(grid, scheme).at(0);
+    for (Index e = 0; e < t.edge_count(); ++e) {
+      const auto [a, b] = t.edge_vertices(e);
+      if (t.vertex_kind(a) != VertexKind::interior || t.vertex_kind(b) != VertexKind::interior) continue;
+      std::map<double, int> counts;
+      for (const auto& [v, weight] : test::merged_row(table, e)) ++counts[weight];
+      const std::map<double, int> expected =
+          w == 0.0 ? std::map<double, int>{{0.5, 2}, {0.0, 6}} : std::map<double, int>{{0.5, 2}, {2 * w, 2}, {-w, 4}};
+      EXPECT_EQ(counts, expected) << "w = " << w << ", edge " << e;
+    }
+    EXPECT_LT(regular_error(scheme, [](double x, double y) { return 2 * x - y + 1; }), 1e-12) << w;
+    EXPECT_GT(regular_error(scheme, [](double x, double y) { return x * x * x - 2 * x * y * y; }), 1e-4) << w;
+  }
+  EXPECT_TRUE(butterfly_scheme().takes_tension);
+  EXPECT_FALSE(modified_butterfly_scheme().takes_tension);
+}
+
 // The four-point rule along a straight boundary reproduces cubics: edge
 // points of the boundary row y = 0 whose four-point stencil stays on the row.
 TEST(Butterfly, BoundaryFourPointReproducesCubics) {

@@ -8,7 +8,9 @@
 namespace subdiv {
 
 /// The tension w of the registered `butterfly` scheme (Dyn, Levin and
-/// Gregory 1990): 1/16, the value that reproduces cubic polynomials.
+/// Gregory 1990): 1/16, the value that reproduces cubic polynomials. The
+/// modified Butterfly's regular rule always uses it; `butterfly` reads
+/// SchemeParameters::tension.
 inline constexpr double kButterflyTension = 1.0 / 16.0;
 
 /// The modified Butterfly's weight s_j on the j-th ring neighbour of an

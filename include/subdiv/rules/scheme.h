@@ -33,6 +33,15 @@ enum class EdgeRule : std::uint8_t { smooth, crease };
 
 const char* to_string(VertexRule);
 
+/// The parameters of a parameterised family of schemes. A registered scheme
+/// carries its defaults; set them on a copy (Scheme is a plain value) to
+/// refine or analyse another member. Masks read them from the LevelView.
+struct SchemeParameters {
+  /// Butterfly's tension w (Dyn, Levin and Gregory 1990): 1/16 reproduces
+  /// cubic polynomials on regular meshes.
+  double tension = 1.0 / 16.0;
+};
+
 /// What a mask may look at: the parent level's topology (not its positions)
 /// and the sharpness of its edges.
 /// An edge is sharp for the rule being evaluated when its sharpness exceeds
@@ -57,6 +66,7 @@ struct LevelView {
   /// sector (rules/rule_helpers.h: sector_theta).
   std::span<const double> sector_angle = {};
   std::span<const double> child_end_sharpness = {};  ///< empty: is_sharp_at == is_sharp
+  SchemeParameters parameters = {};  ///< the refined scheme's
 
   bool is_sharp(Index e) const {
     return !edge_sharpness.empty() && edge_sharpness[static_cast<std::size_t>(e)] > sharp_above;
@@ -140,6 +150,9 @@ struct Scheme {
   LimitMaskFunction limit_masks = nullptr;
   CornerMask corner_point = nullptr;  ///< dual split only
   BoundaryPointMask boundary_point = nullptr;  ///< dual split only
+  SchemeParameters parameters = {};
+  /// Whether the masks read parameters.tension (the CLI's --tension).
+  bool takes_tension = false;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.
