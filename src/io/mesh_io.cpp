@@ -54,6 +54,9 @@ std::vector<std::string> write_mesh(const PolygonMesh& mesh, const std::filesyst
   }
   if (format != FileFormat::obj && !mesh.tags.empty() && options.write_tags)
     warnings.push_back(std::string(to_string(format)) + " has no place for tags (creases, corners, holes): not written");
+  if (format != FileFormat::obj && !mesh.polylines.empty())
+    warnings.push_back(std::string(to_string(format)) + " has no place for polylines (OBJ 'l' lines): " +
+                       std::to_string(mesh.polylines.size()) + " not written");
   detail::write_file_atomically(path, data);
   return warnings;
 }

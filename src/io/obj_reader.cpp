@@ -44,9 +44,10 @@ class ObjParser {
     if (keyword == "vt") return parse_uv(s);
     if (keyword == "vn") return parse_normal(s);
     if (keyword == "t") return parse_tag(s);
+    if (keyword == "l") return parse_polyline(s);
     if (keyword == "g" || keyword == "o" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib" ||
-        keyword == "vp" || keyword == "l" || keyword == "p" || keyword == "cstype" || keyword == "deg")
-      return;  // groups, materials, curves: not part of the surface
+        keyword == "vp" || keyword == "p" || keyword == "cstype" || keyword == "deg")
+      return;  // groups, materials, free-form curves: not kept
     if (!std::all_of(keyword.begin(), keyword.end(), [](char c) { return c > ' ' && c < 127; }))
       fail("unreadable line (binary data or a corrupted file?)");
     if (unknown_keywords_++ == 0)
@@ -147,6 +148,36 @@ class ObjParser {
     out_.mesh.face_offsets.push_back(static_cast<Index>(corners.size()));
     out_.lines.face_lines.push_back(clamp_line(line_));
   }
+
+  // `l v1 v2 ...` (or v/vt): a polyline, closed when its last index is its
+  // first. Texture indices are read and not kept.
+  void parse_polyline(LineScanner& s) {
+    MeshPolyline polyline;
+    while (!s.at_end()) {
+      long long v;
+      if (!s.integer(v, '/')) fail("bad polyline vertex '" + printable(s.token()) + "'");
+      if (s.consume('/')) {
+        long long vt;
+        if (!s.integer(vt)) fail("bad texture index in polyline");
+        resolve(vt, uv_count(), "texture");
+      }
+      if (s.peek() != '\0' && !detail::is_space(s.peek())) fail("bad polyline vertex");
+      polyline.vertices.push_back(static_cast<Index>(resolve(v, out_.mesh.positions.size(), "vertex")));
+      if (++polyline_indices_ >= static_cast<std::size_t>(kMaxElements)) fail("too many polyline vertices");
+    }
+    if (polyline.vertices.size() >= 2 && polyline.vertices.front() == polyline.vertices.back()) {
+      polyline.vertices.pop_back();
+      polyline.closed = true;
+    }
+    if (polyline.vertices.size() < 2)
+      fail(std::string("polyline with ") +
+           (polyline.closed ? "1 distinct point" : std::to_string(polyline.vertices.size()) + " points") +
+           " (a polyline needs at least 2)");
+    out_.mesh.polylines.push_back(std::move(polyline));
+    out_.lines.polyline_lines.push_back(clamp_line(line_));
+  }
+
+  std::size_t uv_count() const { return uvs_.size() / 2; }
 
   // --- tags --------------------------------------------------------------
   struct TagArgs {
@@ -292,6 +323,13 @@ class ObjParser {
           fail("face " + std::to_string(f) + " refers to vertex " + std::to_string(v + 1) + " but the file has " +
                std::to_string(nv) + " vertices");
         }
+    for (std::size_t l = 0; l < mesh.polylines.size(); ++l)
+      for (const Index v : mesh.polylines[l].vertices)
+        if (static_cast<std::size_t>(v) >= nv) {
+          line_ = out_.lines.polyline_lines[l];
+          fail("polyline " + std::to_string(l) + " refers to vertex " + std::to_string(v + 1) + " but the file has " +
+               std::to_string(nv) + " vertices");
+        }
     line_ = 0;
     finish_face_varying("uv", 2, uvs_, uv_index_, "vt");
     finish_face_varying("normal", 3, normals_, normal_index_, "vn");
@@ -331,6 +369,7 @@ class ObjParser {
   std::vector<Index> uv_index_, normal_index_;
   std::size_t colored_vertices_ = 0;
   std::size_t unknown_keywords_ = 0;
+  std::size_t polyline_indices_ = 0;
 };
 
 }  // namespace

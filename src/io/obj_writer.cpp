@@ -1,6 +1,6 @@
 // OBJ writer: positions (with colours when the mesh has a 3-component "color"
-// vertex channel), the "uv" and "normal" face-varying channels, faces, and
-// tags in OpenSubdiv's syntax.
+// vertex channel), the "uv" and "normal" face-varying channels, faces,
+// polylines (`l` lines), and tags in OpenSubdiv's syntax.
 
 #include <cmath>
 #include <numbers>
@@ -115,7 +115,13 @@ std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options, std
   append_number(out, mesh.vertex_count());
   out += " vertices, ";
   append_number(out, mesh.face_count());
-  out += " faces\n";
+  out += " faces";
+  if (!mesh.polylines.empty()) {
+    out += ", ";
+    append_number(out, static_cast<long long>(mesh.polylines.size()));
+    out += " polylines";
+  }
+  out += '\n';
 
   const VertexChannel* color = nullptr;
   const FaceVaryingChannel* uv = nullptr;
@@ -176,6 +182,19 @@ std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options, std
           append_number(out, normal->indices[ci] + 1);
         }
       }
+    }
+    out += '\n';
+  }
+  // A closed polyline repeats its first vertex at the end (docs/formats.md).
+  for (const MeshPolyline& polyline : mesh.polylines) {
+    out += 'l';
+    for (const Index v : polyline.vertices) {
+      out += ' ';
+      append_number(out, v + 1);
+    }
+    if (polyline.closed && !polyline.vertices.empty()) {
+      out += ' ';
+      append_number(out, polyline.vertices.front() + 1);
     }
     out += '\n';
   }

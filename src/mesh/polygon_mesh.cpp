@@ -47,6 +47,11 @@ void check_face_arrays(const PolygonMesh& mesh) {
 void check_indices(const PolygonMesh& mesh) {
   check_face_arrays(mesh);
   const Index n = mesh.vertex_count();
+  for (std::size_t l = 0; l < mesh.polylines.size(); ++l)
+    for (const Index v : mesh.polylines[l].vertices)
+      if (v < 0 || v >= n)
+        throw InvalidInputError("mesh: polyline " + std::to_string(l) + " refers to vertex " + std::to_string(v) +
+                                ", outside [0, " + std::to_string(n) + ")");
   for (const auto& ch : mesh.vertex_channels) {
     if (ch.components <= 0 ||
         ch.values.size() != static_cast<std::size_t>(n) * static_cast<std::size_t>(ch.components))

@@ -183,13 +183,22 @@ void check_topology(const PolygonMesh& mesh, const MeshTopology& topo, const Sou
                   str(b) + " in the same direction (inconsistent orientation)");
     }
   }
+  // A vertex on a polyline (OBJ `l` line) is used, though by no face.
+  std::vector<bool> on_polyline;
+  if (!mesh.polylines.empty()) {
+    on_polyline.assign(static_cast<std::size_t>(topo.vertex_count()), false);
+    for (const MeshPolyline& l : mesh.polylines)
+      for (const Index v : l.vertices)
+        if (v >= 0 && v < topo.vertex_count()) on_polyline[static_cast<std::size_t>(v)] = true;
+  }
   for (Index v = 0; v < topo.vertex_count(); ++v) {
     const std::uint32_t vline = line_of(&SourceLines::vertex_lines, lines, v);
     if (topo.fan_count(v) > 1)
       out.add(IssueKind::non_manifold_vertex, v, vline,
               "vertex " + str(v) + " is non-manifold: its faces form " + str(topo.fan_count(v)) +
                   " separate fans");
-    else if (topo.vertex_kind(v) == VertexKind::isolated)
+    else if (topo.vertex_kind(v) == VertexKind::isolated &&
+             (on_polyline.empty() || !on_polyline[static_cast<std::size_t>(v)]))
       out.add(IssueKind::isolated_vertex, v, vline, "vertex " + str(v) + " is used by no face");
   }
   (void)mesh;

@@ -200,6 +200,59 @@ run analyze-curve 0 analyze -s cubic-bspline && stdout_has analyze-curve "0.1250
 run analyze-curve-json 0 analyze -s four-point --json && stdout_has analyze-curve-json '"tangent_mask"'
 run analyze-curve-k 1 analyze -s chaikin -k 3 && stderr_one_line analyze-curve-k
 
+# Curve schemes refine polylines (OBJ l lines): a closed square (last index =
+# first) and an open polyline of 5 points. Points per level: closed 2n; open
+# 2n - 1 (cubic-bspline, four-point) or 2n (chaikin, which keeps both ends).
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nl 1 2 3 4 1\nv 0 0 1\nv 1 0 1\nv 2 1 1\nv 3 1 1\nv 4 0 1\nl 5 6 7 8 9\n' \
+  >"$work/curves.obj"
+for case in cubic-bspline:33 chaikin:36 four-point:33; do
+  scheme=${case%%:*}
+  run "refine-curve-$scheme" 0 refine "$work/curves.obj" -s "$scheme" -l 2 -o "$work/curve_$scheme.obj" --stats
+  stdout_has "refine-curve-$scheme" "wrote $work/curve_$scheme.obj: ${case##*:} vertices, 2 polylines"
+  stdout_has "refine-curve-$scheme" "level 2: ${case##*:} points, 2 polylines"
+  [ "$(grep -c '^l ' "$work/curve_$scheme.obj")" -eq 2 ] && grep -qE '^l 1( [0-9]+){15} 1$' "$work/curve_$scheme.obj" &&
+    pass || fail "refine -s $scheme: not one closed l line of 16 points and one more l line"
+done
+for p in "0 0 0" "1 1 0" "2 1 1" "4 0 1"; do  # four-point interpolates: the coarse points are kept
+  grep -qx "v $p" "$work/curve_four-point.obj" && pass || fail "refine -s four-point: lost the point $p"
+done
+run refine-curve-tension 0 refine "$work/curves.obj" -s four-point --tension 0.1 -l 2 -o "$work/curve_w.obj"
+cmp -s "$work/curve_w.obj" "$work/curve_four-point.obj" && fail "refine --tension 0.1: same as 1/16" || pass
+run refine-curve-tension-default 0 refine "$work/curves.obj" -s four-point --tension 0.0625 -l 2 -o "$work/curve_w16.obj"
+cmp -s "$work/curve_w16.obj" "$work/curve_four-point.obj" && pass || fail "refine --tension 1/16 is not the default"
+run refine-curve-tension-bad 1 refine "$work/curves.obj" -s cubic-bspline --tension 0.1 -o "$work/x.obj" &&
+  stderr_one_line refine-curve-tension-bad && stderr_has refine-curve-tension-bad "has no tension"
+run refine-surface-tension 1 refine "$meshes/cube.obj" --tension 0.1 -o "$work/x.obj" && stderr_one_line refine-surface-tension
+run refine-curve-faces 1 refine "$meshes/cube.obj" -s chaikin -o "$work/x.obj" && stderr_one_line refine-curve-faces &&
+  stderr_has refine-curve-faces "chaikin is a curve scheme and refines polylines, but the file has 6 faces"
+printf 'v 0 0 0\nv 1 0 0\n' >"$work/points.obj"
+run refine-curve-none 1 refine "$work/points.obj" -s cubic-bspline -o "$work/x.obj" && stderr_one_line refine-curve-none &&
+  stderr_has refine-curve-none "no polylines"
+printf 'v 0 0 0\nv 1 0 0\nv 2 1 0\nl 1 2 3\n' >"$work/short.obj"
+run refine-curve-short 1 refine "$work/short.obj" -s four-point -o "$work/x.obj" && stderr_one_line refine-curve-short &&
+  stderr_has refine-curve-short "short.obj:4: polyline 0: curve scheme 'four-point': an open polyline needs at least 4 points"
+run refine-curve-surface 1 refine "$work/curves.obj" -s catmull-clark -o "$work/x.obj" &&
+  stderr_one_line refine-curve-surface && stderr_has refine-curve-surface "need a curve scheme"
+run refine-curve-option 1 refine "$work/curves.obj" -s chaikin --triangulate -o "$work/x.obj" &&
+  stderr_one_line refine-curve-option
+printf 'v 0 0 0\nv 1 0 0\nl 1 3\n' >"$work/bad_l.obj"
+run refine-curve-badindex 1 refine "$work/bad_l.obj" -s chaikin -o "$work/x.obj" && stderr_one_line refine-curve-badindex &&
+  stderr_has refine-curve-badindex "bad_l.obj:3: polyline 0 refers to vertex 3 but the file has 2 vertices"
+printf 'v 0 0 0\nl 1\n' >"$work/one_l.obj"
+run info-curve-onepoint 1 info "$work/one_l.obj" && stderr_one_line info-curve-onepoint && stderr_has info-curve-onepoint "one_l.obj:2:"
+[ ! -e "$work/x.obj" ] && pass || fail "refine with a curve scheme wrote a file after an error"
+run info-curves 0 info "$work/curves.obj" && stdout_has info-curves "polylines       2  (closed 1, points 9)" &&
+  stdout_has info-curves "validation      ok"
+run convert-curves 0 convert "$work/curves.obj" "$work/curves_copy.obj"
+[ "$(grep '^l ' "$work/curves_copy.obj")" = "$(printf 'l 1 2 3 4 1\nl 5 6 7 8 9')" ] && pass ||
+  fail "convert: polylines not kept"
+run convert-curves-ply 0 convert "$work/curves.obj" "$work/curves.ply" && stderr_has convert-curves-ply "no place for polylines"
+run schemes-curves 0 schemes
+for scheme in cubic-bspline chaikin four-point; do
+  grep -qE "^$scheme " "$work/out" && pass || fail "schemes: $scheme not listed"
+done
+[ "$(grep -c 'curve scheme (polylines' "$work/out")" -eq 3 ] && pass || fail "schemes: curve schemes not marked"
+
 # limit: every vertex at its limit position, normals as vn lines; inputs untouched.
 cp "$meshes/cube.obj" "$work/cube_in.obj"
 run limit-cc 0 limit "$work/cube_in.obj" -s catmull-clark --normals -o "$work/cube_limit.obj" &&

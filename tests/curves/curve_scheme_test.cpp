@@ -363,6 +363,35 @@ TEST(CurveChaikin, ClosedLimitIsTheUniformQuadraticBSpline) {
   RecordProperty("raw_error_level4", sci(raw_error[4]));
 }
 
+// Refinability: the refined points of a closed polygon are the control points
+// of the same spline on the finer knots. Level L's point k is the control
+// point at parameter k h (cubic) or chaikin_parameter(k, L) (quadratic), h =
+// 2^-L, its basis function scaled by h; both curves are evaluated from the
+// basis functions everywhere, not only at the points.
+TEST(CurveRefine, ClosedBSplineSchemesKeepTheirSpline) {
+  struct Case {
+    const CurveScheme* scheme;
+    std::function<double(double)> basis;
+    bool quadratic;
+  };
+  for (const Case& c : {Case{&cubic_bspline_curve_scheme(), cubic_basis, false},
+                        Case{&chaikin_curve_scheme(), quadratic_basis, true}}) {
+    const Polyline coarse{random_points(6, 29), true};
+    for (int levels = 1; levels <= 5; ++levels) {
+      const Polyline fine = refine(coarse, *c.scheme, levels);
+      const double h = 1.0 / (1 << levels);
+      const double shift = c.quadratic ? chaikin_parameter(0, levels) / h : 0.0;
+      double error = 0.0;
+      for (int i = 0; i <= 6 * 64; ++i) {
+        const double t = i / 64.0 + 0.01;  // off the knots and on every span
+        error = std::max(
+            error, distance(spline(fine.points, true, t / h, c.basis, shift), spline(coarse.points, true, t, c.basis)));
+      }
+      EXPECT_LE(error, 1e-13) << c.scheme->name << " level " << levels;
+    }
+  }
+}
+
 // Open: end points kept; the limit is the quadratic B-spline of the polygon
 // with doubled end points (chaikin.cpp). With those doubled, the refined
 // points are the pure corner cutting of the doubled polygon.

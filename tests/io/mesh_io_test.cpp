@@ -70,6 +70,20 @@ TEST_F(MeshIoTest, TagsSurviveObjAndAreReportedLostElsewhere) {
   EXPECT_NE(warnings[0].find("no place for tags"), std::string::npos);
 }
 
+TEST_F(MeshIoTest, PolylinesSurviveObjAndAreReportedLostElsewhere) {
+  PolygonMesh mesh = test::cube();
+  mesh.polylines = {{{0, 1, 2, 3}, true}, {{4, 5}, false}};
+  EXPECT_TRUE(write_mesh(mesh, dir_ / "m.obj").empty());
+  EXPECT_EQ(read_mesh(dir_ / "m.obj").mesh.polylines, mesh.polylines);
+  for (const char* name : {"m.ply", "m.off"}) {
+    const auto warnings = write_mesh(mesh, dir_ / name);
+    ASSERT_EQ(warnings.size(), 1u) << name;
+    EXPECT_NE(warnings[0].find("no place for polylines (OBJ 'l' lines): 2 not written"), std::string::npos)
+        << warnings[0];
+    EXPECT_TRUE(read_mesh(dir_ / name).mesh.polylines.empty());
+  }
+}
+
 TEST_F(MeshIoTest, ReadingMissingOrDirectoryFails) {
   try {
     read_mesh(dir_ / "missing.obj");

@@ -161,6 +161,67 @@ TEST(ObjReader, EmptyInputIsAnEmptyMesh) {
   EXPECT_EQ(f.mesh.face_count(), 0);
 }
 
+TEST(ObjReader, Polylines) {
+  const MeshFile f = parse_obj(
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\n"
+      "l 1 2 3\n"            // open
+      "l 1 2 3 4 1\n"        // closed: the last index is the first
+      "l -4/1 -3/2 -2 -4\n"  // relative indices and v/vt, closed
+      "l 4 1\n");            // two points
+  EXPECT_EQ(f.mesh.face_count(), 0);
+  ASSERT_EQ(f.mesh.polylines.size(), 4u);
+  EXPECT_EQ(f.mesh.polylines[0], (MeshPolyline{{0, 1, 2}, false}));
+  EXPECT_EQ(f.mesh.polylines[1], (MeshPolyline{{0, 1, 2, 3}, true}));
+  EXPECT_EQ(f.mesh.polylines[2], (MeshPolyline{{0, 1, 2}, true}));
+  EXPECT_EQ(f.mesh.polylines[3], (MeshPolyline{{3, 0}, false}));
+  EXPECT_EQ(f.lines.polyline_lines, (std::vector<std::uint32_t>{7, 8, 9, 10}));
+  EXPECT_TRUE(f.warnings.empty());
+  // Faces and polylines in one file are both kept, and the faces unchanged.
+  const MeshFile both = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\n");
+  EXPECT_EQ(both.mesh.face_count(), 1);
+  EXPECT_EQ(both.mesh.polylines, (std::vector<MeshPolyline>{{{0, 1}, false}}));
+  EXPECT_TRUE(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").mesh.polylines.empty());
+}
+
+TEST(ObjReader, PolylineErrorsNameFileAndLine) {
+  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nl 1 3\n"),
+            "t.obj:3: polyline 0 refers to vertex 3 but the file has 2 vertices");
+  EXPECT_EQ(error_of("v 0 0 0\nl 1 2\nv 1 0 0\nl 2 9 1\n"),
+            "t.obj:4: polyline 1 refers to vertex 9 but the file has 2 vertices");
+  EXPECT_EQ(error_of("v 0 0 0\nl 1\n"), "t.obj:2: polyline with 1 points (a polyline needs at least 2)");
+  EXPECT_EQ(error_of("v 0 0 0\nl 1 1\n"), "t.obj:2: polyline with 1 distinct point (a polyline needs at least 2)");
+  EXPECT_EQ(error_of("v 0 0 0\nl\n"), "t.obj:2: polyline with 0 points (a polyline needs at least 2)");
+  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nl 1 0\n"), "t.obj:3: vertex index 0 is invalid (OBJ indices start at 1)");
+  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nl 1 -3\n"),
+            "t.obj:3: relative vertex index -3 reaches before the first vertex (only 2 so far)");
+  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nl 1 x\n"), "t.obj:3: bad polyline vertex 'x'");
+  EXPECT_EQ(error_of("v 0 0 0\nv 1 0 0\nl 1 2/\n"), "t.obj:3: bad texture index in polyline");
+}
+
+TEST(ObjWriter, PolylinesRoundTrip) {
+  PolygonMesh mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.5}, {2, 2, 2}};
+  mesh.polylines = {{{0, 1, 2, 3}, true}, {{4, 2, 0}, false}, {{1, 3}, false}};
+  const std::string text = format_obj(mesh);
+  EXPECT_NE(text.find("\nl 1 2 3 4 1\nl 5 3 1\nl 2 4\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("3 polylines"), std::string::npos);
+  const MeshFile back = parse_obj(text);
+  EXPECT_EQ(back.mesh.positions, mesh.positions);
+  EXPECT_EQ(back.mesh.polylines, mesh.polylines);
+  EXPECT_EQ(back.mesh.face_count(), 0);
+  // With faces, and read back again: the text is a fixed point.
+  PolygonMesh with_faces = test::cube();
+  with_faces.polylines = {{{0, 1, 2}, true}};
+  const std::string once = format_obj(with_faces);
+  const MeshFile again = parse_obj(once);
+  EXPECT_EQ(again.mesh.polylines, with_faces.polylines);
+  EXPECT_EQ(again.mesh.face_indices, with_faces.face_indices);
+  EXPECT_EQ(format_obj(again.mesh), once);
+  // A polyline through a vertex that is not there is refused.
+  mesh.polylines.push_back({{0, 5}, false});
+  EXPECT_THROW(format_obj(mesh), InvalidInputError);
+}
+
 TEST(ObjWriter, RoundTripIsExact) {
   PolygonMesh mesh = test::cube();
   mesh.positions[3] = {0.1, 1.0 / 3.0, -2.0e-300};

@@ -32,6 +32,14 @@ int run_info(const InfoOptions& opt) {
   const ValidationReport report = validate(file.mesh, topo, &file.lines, vopt);
   text += format_stats(compute_stats(file.mesh, topo));
   text += format_channels(file.mesh);
+  if (!file.mesh.polylines.empty()) {  // OBJ l lines: curves beside the faces
+    std::size_t closed = 0, points = 0;
+    for (const MeshPolyline& l : file.mesh.polylines) {
+      closed += l.closed ? 1 : 0;
+      points += l.vertices.size();
+    }
+    text += fmt::format("polylines       {}  (closed {}, points {})\n", file.mesh.polylines.size(), closed, points);
+  }
   text += format_tags(file.mesh.tags);
   for (const auto& w : file.warnings) text += fmt::format("read note       {}\n", w);
   text += format_validation(report, opt.path, opt.max_issues);

@@ -1,20 +1,24 @@
 // subdiv refine IN -s SCHEME -l N -o OUT: uniform refinement with any scheme
-// of the registry, carrying vertex and face-varying data through.
+// of the registry, carrying vertex and face-varying data through; with a
+// curve scheme, refinement of the file's polylines (OBJ `l` lines).
 
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <optional>
+#include <string>
 
 #include <fmt/format.h>
 
 #include "commands.h"
 #include "rule_options.h"
-#include "scheme_option.h"
 #include "output_checks.h"
 #include "subdiv/core/error.h"
+#include "subdiv/curves/curve_scheme.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/triangulate.h"
 #include "subdiv/refine/refine.h"
+#include "subdiv/rules/scheme.h"
 
 namespace subdiv::cli {
 
@@ -33,15 +37,121 @@ struct RefineCommandOptions {
   bool triangulate = false;
   bool ascii = false;
   bool quiet = false;
+  std::optional<double> tension;
   RuleOptionValues rules;
 };
 
+/// The options only surface schemes read; a curve scheme refuses them
+/// rather than ignore them.
+const char* surface_option_given(const RefineCommandOptions& opt) {
+  if (!opt.boundary.empty()) return "--boundary";
+  if (!opt.crease_method.empty()) return "--crease-method";
+  if (opt.allow_non_manifold) return "--allow-non-manifold";
+  if (opt.triangulate) return "--triangulate";
+  if (opt.rules.boundary_rules != "standard") return "--boundary-rules";
+  if (opt.rules.corner_angles != "fixed") return "--corner-angles";
+  if (opt.rules.flatness) return "--flatness";
+  if (!opt.rules.corners.empty()) return "--corner";
+  return nullptr;
+}
+
+std::string curve_scheme_names() {
+  std::string names;
+  for (const CurveScheme* s : all_curve_schemes()) names += (names.empty() ? "" : ", ") + std::string(s->name);
+  return names;
+}
+
+// Every polyline of the file refined on its own; the output holds the refined
+// points of each polyline in turn and one `l` line per polyline.
+int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& opt) {
+  const std::string name(registered.name);
+  if (const char* option = surface_option_given(opt))
+    throw InvalidInputError(std::string(option) + " applies to surface schemes, not to the curve scheme " + name);
+  if (opt.tension && registered.tension == 0.0)
+    throw InvalidInputError("--tension: the curve scheme " + name + " has no tension (four-point has)");
+  const CurveScheme scheme = opt.tension ? four_point_scheme(*opt.tension) : registered;
+  check_output_path(opt.input, opt.output);
+
+  const MeshFile file = read_mesh(opt.input);
+  print_warnings(opt.input, file.warnings);
+  const PolygonMesh& mesh = file.mesh;
+  if (mesh.face_count() > 0)
+    throw InvalidInputError(opt.input + ": " + name + " is a curve scheme and refines polylines, but the file has " +
+                            std::to_string(mesh.face_count()) + " faces (surface schemes: see 'subdiv schemes')");
+  if (mesh.polylines.empty())
+    throw InvalidInputError(opt.input + ": no polylines ('l' lines) for the curve scheme " + name + " to refine");
+  if (!mesh.vertex_channels.empty() || !mesh.tags.empty())
+    std::fprintf(stderr, "subdiv: warning: %s: vertex channels and tags are not carried through curve refinement\n",
+                 opt.input.c_str());
+
+  const auto start = std::chrono::steady_clock::now();
+  PolygonMesh result;
+  for (std::size_t l = 0; l < mesh.polylines.size(); ++l) {
+    const MeshPolyline& in = mesh.polylines[l];
+    Polyline coarse{{}, in.closed};
+    coarse.points.reserve(in.vertices.size());
+    for (const Index v : in.vertices) coarse.points.push_back(mesh.positions[static_cast<std::size_t>(v)]);
+    Polyline fine;
+    try {
+      fine = refine(coarse, scheme, opt.levels);
+    } catch (const InvalidInputError& e) {
+      throw ParseError(opt.input, SourceLines::at(file.lines.polyline_lines, static_cast<Index>(l)),
+                       "polyline " + std::to_string(l) + ": " + e.what());
+    }
+    if (fine.points.size() > static_cast<std::size_t>(kMaxElements) - result.positions.size())
+      throw InvalidInputError(opt.input + ": the refined polylines have more points than an Index can count");
+    MeshPolyline out{{}, fine.closed};
+    out.vertices.reserve(fine.points.size());
+    for (const Vec3& p : fine.points) {
+      out.vertices.push_back(result.vertex_count());
+      result.positions.push_back(p);
+    }
+    result.polylines.push_back(std::move(out));
+  }
+  const auto write_start = std::chrono::steady_clock::now();
+  WriteOptions wopt;
+  wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  print_warnings(opt.output, write_mesh(result, opt.output, wopt));
+  if (opt.stats) {
+    std::printf("curve scheme %s, %d levels", name.c_str(), opt.levels);
+    if (scheme.tension != 0.0) std::printf(", tension %g", scheme.tension);
+    std::printf("\n");
+    for (int level = 0; level <= opt.levels; ++level) {
+      long long points = 0;
+      for (const MeshPolyline& p : mesh.polylines)
+        points += refined_point_count(scheme, static_cast<Index>(p.vertices.size()), p.closed, level);
+      std::printf("level %d: %lld points, %zu polylines\n", level, points, mesh.polylines.size());
+    }
+    std::printf("refine %.3f s, write %.3f s\n", std::chrono::duration<double>(write_start - start).count(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count());
+  }
+  std::printf("wrote %s: %d vertices, %zu polylines\n", opt.output.c_str(), result.vertex_count(),
+              result.polylines.size());
+  return kExitOk;
+}
+
 int run_refine(const RefineCommandOptions& opt) {
-  const Scheme* scheme = &scheme_named(opt.scheme);
+  const Scheme* scheme = find_scheme(opt.scheme);
+  if (!scheme) {
+    if (const CurveScheme* curve = find_curve_scheme(opt.scheme)) return run_curve_refine(*curve, opt);
+    std::string names;
+    for (const Scheme* s : all_schemes()) names += (names.empty() ? "" : ", ") + std::string(s->name);
+    throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + names +
+                            "; curve schemes: " + curve_scheme_names() + ")");
+  }
+  if (opt.tension) throw InvalidInputError("--tension applies to the curve scheme four-point, not to " + opt.scheme);
   check_output_path(opt.input, opt.output);
 
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
+  if (!file.mesh.polylines.empty()) {
+    if (file.mesh.face_count() == 0)
+      throw InvalidInputError(opt.input + ": no faces for the surface scheme " + opt.scheme + " to refine; its " +
+                              std::to_string(file.mesh.polylines.size()) + " polylines need a curve scheme (" +
+                              curve_scheme_names() + ")");
+    std::fprintf(stderr, "subdiv: warning: %s: %zu polylines are not refined by a surface scheme: not written\n",
+                 opt.input.c_str(), file.mesh.polylines.size());
+  }
   if (opt.triangulate && scheme->needs_triangles) {
     file.mesh = triangulate(file.mesh);
     file.lines.face_lines.clear();  // faces and holes were renumbered
@@ -99,6 +209,12 @@ int run_schemes() {
     std::printf("%-15s %s\n", std::string(s->name).c_str(), std::string(s->summary).c_str());
     std::printf("%-15s   %s; %s\n", "", to_string(s->split), std::string(s->citation).c_str());
   }
+  // Curve schemes refine polylines (OBJ `l` lines), not faces.
+  for (const CurveScheme* s : all_curve_schemes()) {
+    std::printf("%-15s %s\n", std::string(s->name).c_str(), std::string(s->summary).c_str());
+    std::printf("%-15s   curve scheme (polylines, %s); %s\n", "", s->dual ? "dual" : "primal",
+                std::string(s->citation).c_str());
+  }
   return kExitOk;
 }
 
@@ -109,7 +225,8 @@ Command add_refine_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("refine", "Uniformly refine a mesh with a subdivision scheme");
   cmd->add_option("input", opt->input, "Mesh to refine (.obj, .ply or .off)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
-  cmd->add_option("-s,--scheme", opt->scheme, "Scheme (see 'subdiv schemes')")->capture_default_str();
+  cmd->add_option("-s,--scheme", opt->scheme, "Scheme, surface or curve (see 'subdiv schemes')")->capture_default_str();
+  cmd->add_option("--tension", opt->tension, "four-point curve scheme: the tension w (default 1/16)");
   cmd->add_option("-l,--levels", opt->levels, "Refinement steps")->capture_default_str()->check(CLI::Range(0, 12));
   cmd->add_option("--boundary", opt->boundary,
                   "Boundary interpolation, overriding the file's tag (default: the tag, else edge-and-corner)")
@@ -129,10 +246,13 @@ Command add_refine_command(CLI::App& app) {
   cmd->add_flag("-q,--quiet", opt->quiet, "No progress lines on stderr");
   cmd->footer(
       "Vertex data (colours, any per-vertex channel) is refined with the scheme's\n"
-      "masks; face-varying data (UVs) linearly within faces.\n"
+      "masks; face-varying data (UVs) linearly within faces. Curve schemes\n"
+      "(cubic-bspline, chaikin, four-point) refine the polylines of a file\n"
+      "without faces (OBJ 'l' lines; closed when the last index is the first).\n"
       "Examples:\n"
       "  subdiv refine data/meshes/spot_control_mesh.obj -s catmull-clark -l 3 -o /tmp/spot3.obj\n"
-      "  subdiv refine data/meshes/cube.obj -s loop --triangulate -l 4 -o /tmp/cube_loop.ply --stats");
+      "  subdiv refine data/meshes/cube.obj -s loop --triangulate -l 4 -o /tmp/cube_loop.ply --stats\n"
+      "  subdiv refine curve.obj -s four-point --tension 0.08 -l 4 -o /tmp/curve4.obj");
   return [opt] { return run_refine(*opt); };
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Wavefront OBJ: v (optionally with r g b), vt, vn, f in the v, v/vt, v//vn
-// and v/vt/vn forms with negative (relative) indices, comments, groups, and
-// OpenSubdiv's tag lines:
+// and v/vt/vn forms with negative (relative) indices, l (polylines, v or v/vt;
+// closed when the last index equals the first, which is then not stored),
+// comments, groups, and OpenSubdiv's tag lines:
 //
 //   t crease N/M/0 a0 b0 a1 b1 ... s...   N/2 edges (a_i, b_i); M = 1 or N/2 sharpnesses
 //   t corner N/M/S v... s... [type...]    M = 1 or N sharpnesses; S = 0, 1 or N

@@ -10,6 +10,14 @@
 
 namespace subdiv {
 
+/// A polyline over a mesh's vertices (an OBJ `l` line). A closed one joins
+/// its last vertex to its first; the first vertex is not repeated at the end.
+struct MeshPolyline {
+  std::vector<Index> vertices;
+  bool closed = false;
+  friend bool operator==(const MeshPolyline&, const MeshPolyline&) = default;
+};
+
 /// Positions, faces (offsets + indices, like CSR), tags and data channels.
 ///
 /// Face f uses face_indices[face_offsets[f] .. face_offsets[f+1]); its corners
@@ -19,6 +27,9 @@ namespace subdiv {
 /// non-decreasing offsets and indices in [0, vertex_count()); check_indices()
 /// enforces this, validate() reports everything else (degenerate faces,
 /// non-manifold elements...).
+///
+/// Polylines (OBJ `l` lines) are curves over the same positions; surface
+/// refinement and analysis do not read them, curve schemes refine them.
 struct PolygonMesh {
   std::vector<Vec3> positions;
   std::vector<Index> face_offsets{0};
@@ -26,6 +37,7 @@ struct PolygonMesh {
   Tags tags;
   std::vector<VertexChannel> vertex_channels;
   std::vector<FaceVaryingChannel> face_varying_channels;
+  std::vector<MeshPolyline> polylines;
 
   Index vertex_count() const { return static_cast<Index>(positions.size()); }
   Index face_count() const { return static_cast<Index>(face_offsets.size()) - 1; }
@@ -51,7 +63,8 @@ struct PolygonMesh {
 /// is in range. Names the first offending face or corner.
 void check_face_arrays(const PolygonMesh& mesh);
 
-/// check_face_arrays(), and also that channel sizes match. Throws
+/// check_face_arrays(), and also that channel sizes match and polyline
+/// indices are in range. Throws
 /// InvalidInputError unless the face arrays are well formed: offsets
 /// start at 0, never decrease and end at face_indices.size(); every index is in
 /// range; channel sizes match. Names the first offending face or corner.

@@ -16,9 +16,10 @@ struct SourceLines {
   std::string path;
   std::vector<std::uint32_t> vertex_lines;
   std::vector<std::uint32_t> face_lines;
-  std::vector<std::uint32_t> crease_lines;  ///< parallel to Tags::creases
-  std::vector<std::uint32_t> corner_lines;  ///< parallel to Tags::corners
-  std::vector<std::uint32_t> hole_lines;    ///< parallel to Tags::holes
+  std::vector<std::uint32_t> crease_lines;    ///< parallel to Tags::creases
+  std::vector<std::uint32_t> corner_lines;    ///< parallel to Tags::corners
+  std::vector<std::uint32_t> hole_lines;      ///< parallel to Tags::holes
+  std::vector<std::uint32_t> polyline_lines;  ///< parallel to PolygonMesh::polylines
 
   static std::uint32_t at(const std::vector<std::uint32_t>& lines, Index i) {
     return i >= 0 && static_cast<std::size_t>(i) < lines.size() ? lines[static_cast<std::size_t>(i)] : 0;
