@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "subdiv/analysis/analyze.h"
+#include "subdiv/analysis/dual_limit.h"
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/creasing.h"
@@ -153,10 +154,7 @@ int levels_to_resolve(const PolygonMesh& mesh, const Scheme& scheme, int cap) {
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options) {
   if (options.isolation_levels < 0 || options.max_resolve_levels < 0)
     throw InvalidInputError("limit: refinement levels must be >= 0");
-  if (scheme.split == SplitRule::dual)
-    throw InvalidInputError(std::string(scheme.name) +
-                            ": limit positions need the analysis of the dual split's configurations, which "
-                            "it does not cover yet");
+  if (scheme.split == SplitRule::dual) return dual_limit_positions(mesh, scheme, options);
   // The closed forms are those of the standard rules. Under the
   // piecewise-smooth rules the generic masks of the modified matrices apply,
   // after at least one step: a vertex next to an extraordinary sharp vertex
