@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "subdiv/analysis/analyze.h"
+#include "subdiv/analysis/dual_limit.h"
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/creasing.h"
@@ -282,10 +283,10 @@ int levels_to_resolve(const PolygonMesh& mesh, const Scheme& scheme, int cap) {
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options) {
   if (options.isolation_levels < 0 || options.max_resolve_levels < 0)
     throw InvalidInputError("limit: refinement levels must be >= 0");
+  if (scheme.split == SplitRule::dual) return dual_limit_positions(mesh, scheme, options);
   if (!is_primal(scheme.split))
-    throw InvalidInputError(std::string(scheme.name) +
-                            ": limit positions need the analysis of the dual split's configurations, which "
-                            "it does not cover yet");
+    throw InvalidInputError(std::string(scheme.name) + ": no limit positions for the " + to_string(scheme.split) +
+                            " (its configurations repeat only every two steps)");
   // The closed forms are those of the standard rules. Under the
   // piecewise-smooth rules the generic masks of the modified matrices apply,
   // after at least one step: a vertex next to an extraordinary sharp vertex

@@ -11,6 +11,7 @@
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
+#include "subdiv/depth/depth_bound.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
@@ -119,14 +120,71 @@ int max_valence(const PolygonMesh& mesh) {
   return worst;
 }
 
+// An interpolating scheme whose rules reach beyond the one-ring (the
+// Butterfly schemes): the limit mask at the regular configuration is the
+// centre alone, yet new vertices leave the control mesh's faces (unlike the
+// linear schemes, whose control mesh is its own limit).
+bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& options) {
+  AnalysisOptions analysis;
+  analysis.characteristic_map = false;
+  analysis.rules = options.refine;
+  const ConfigurationAnalysis a =
+      analyze(scheme, {Configuration::Kind::interior, regular_faces(scheme), CornerType::convex}, analysis);
+  if (!a.limit_mask || a.matrix.rings <= 1) return false;
+  const Eigen::VectorXd& mask = *a.limit_mask;
+  return std::abs(mask[0] - 1.0) < 1e-9 && mask.tail(mask.size() - 1).cwiseAbs().maxCoeff() < 1e-9;
+}
+
+// Doo-Sabin (docs/design.md, "Depth"): the paper's Theorem 5 on the mesh
+// after the first step, where every vertex has valence 4, plus a term for
+// the extraordinary faces (!= 4 sides), which the grid argument does not
+// reach: there distances contract by |lambda_1| of that face size.
+DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
+  if (scheme.name != "doo-sabin")
+    throw InvalidInputError(std::string(scheme.name) + ": no depth bound for this dual-split scheme");
+  const PolygonMesh first = refined(mesh, scheme, options, 1);
+  DepthBound bound = doo_sabin_bound(max_second_difference(first));
+  std::set<int> sizes;
+  for (Index f = 0; f < first.face_count(); ++f)
+    if (first.face_size(f) != 4) sizes.insert(first.face_size(f));
+  if (sizes.empty()) return bound;
+  double rate = 0.0;
+  int worst = 0;
+  for (const int k : sizes) {
+    AnalysisOptions analysis;
+    analysis.characteristic_map = false;
+    analysis.rules = options.refine;
+    const ConfigurationAnalysis a = analyze(scheme, {Configuration::Kind::interior, k, CornerType::convex}, analysis);
+    if (a.leading.size() < 2)
+      throw InvalidInputError(std::string(scheme.name) + ": no depth bound: the analysis of the face of " +
+                              std::to_string(k) + " sides found no subdominant eigenvalue");
+    if (std::abs(a.leading[1]) > rate || worst == 0) {
+      rate = std::abs(a.leading[1]);
+      worst = k;
+    }
+  }
+  // Not yet a bound everywhere: measured distances exceed this term by up to
+  // 78% on some meshes (docs/design.md, "Depth"); the output says so.
+  bound.source = "paper (regular) + analysis estimate (extraordinary)";
+  bound.terms.push_back({"largest vertex-to-limit distance after the first step, contracted by |lambda_1| at the "
+                         "extraordinary face of " + std::to_string(worst) +
+                             " sides (analysis; an estimate, not proven: exceeded by up to 78% on measured meshes)",
+                         limit_distances(first, scheme, limit_options(options)).max, rate});
+  return bound;
+}
+
 }  // namespace
 
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
+  if (scheme.split == SplitRule::dual) return dual_depth_bound(mesh, scheme, options);
   if (!is_primal(scheme.split))
+    throw InvalidInputError(std::string(scheme.name) + ": no depth bound for the " + to_string(scheme.split) +
+                            ": it needs limit positions, which it does not have yet");
+  if (interpolates_with_wide_masks(scheme, options))
     throw InvalidInputError(std::string(scheme.name) +
-                            ": the depth needs vertex-to-limit distances, which the dual split's vertices lack here; "
-                            "the paper's bound (doo_sabin_bound in subdiv/depth/depth_bound.h) takes the second "
-                            "differences after the first step");
+                            ": no depth bound for an interpolating scheme: every vertex stays on the limit "
+                            "surface, so the vertex-to-limit distance is zero at every depth and bounds nothing "
+                            "about the faces in between");
   // Quad-split schemes on a mesh with other faces: the bound starts after
   // the first step, which makes every face a quad (as the paper does for
   // Doo-Sabin and the survey for Catmull-Clark).
@@ -166,6 +224,18 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
 std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme, int levels) {
   const MeshTopology t(mesh);
   LevelCost cost{0, mesh.vertex_count(), mesh.face_count(), t.edge_count(), mesh.corner_count(), 0};
+  // Dual split: boundary and V-face counts of the current level.
+  std::int64_t boundary_edges = 0, boundary_vertices = 0, v_faces = 0, v_face_corners = 0;
+  for (Index e = 0; e < t.edge_count(); ++e) boundary_edges += t.is_boundary_edge(e) ? 1 : 0;
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    const std::int64_t faces = t.vertex_face_count(v);
+    const bool boundary = t.vertex_kind(v) == VertexKind::boundary;
+    boundary_vertices += boundary ? 1 : 0;
+    if (faces > 0 && (boundary || faces >= 3)) {
+      ++v_faces;
+      v_face_corners += faces + (boundary ? 2 : 0);
+    }
+  }
   std::vector<LevelCost> out;
   for (int level = 0; level <= levels; ++level) {
     cost.level = level;
@@ -179,6 +249,21 @@ std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme
       next.faces = cost.corners;
       next.edges = 2 * cost.edges + cost.corners;
       next.corners = 4 * cost.corners;
+    } else if (scheme.split == SplitRule::dual) {
+      // A child vertex per corner and two per boundary edge; a child face
+      // per face (its corners), per edge (4 corners) and per vertex with one
+      // (its faces' corners, 2 more on a boundary: src/topology/dual_split.cpp).
+      // The child's boundary: two edges per boundary edge and per boundary
+      // vertex; from level 1 every vertex has a V-face.
+      next.vertices = cost.corners + 2 * boundary_edges;
+      next.faces = cost.faces + cost.edges + v_faces;
+      next.corners = cost.corners + 4 * cost.edges + v_face_corners;
+      next.edges = (next.corners + boundary_edges + boundary_vertices) / 2;
+      const std::int64_t child_boundary_edges = boundary_edges + boundary_vertices;
+      boundary_vertices = 2 * boundary_edges;
+      boundary_edges = child_boundary_edges;
+      v_faces = next.vertices;
+      v_face_corners = next.corners + 2 * boundary_vertices;
     } else {
       // A triangle becomes four; an edge two, plus three inside each face.
       next.vertices = cost.vertices + cost.edges;

@@ -107,7 +107,8 @@ run refine-doo-sabin-info 0 info "$work/ds.obj" && stdout_has refine-doo-sabin-i
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nt crease 2/1/0 0 1 3\n' > "$work/ds_crease.obj"
 run refine-doo-sabin-crease 1 refine "$work/ds_crease.obj" -s doo-sabin -o "$work/x.obj"
 stderr_one_line refine-doo-sabin-crease && stderr_has refine-doo-sabin-crease "ds_crease.obj:6: doo-sabin has no crease rules"
-run limit-doo-sabin 1 limit "$meshes/cube.obj" -s doo-sabin -o "$work/x.obj" && stderr_one_line limit-doo-sabin
+run limit-doo-sabin 0 limit "$meshes/cube.obj" -s doo-sabin -o "$work/ds_limit.obj" &&
+  stdout_has limit-doo-sabin "8 vertices at their doo-sabin limit positions (generic masks)"
 run analyze-doo-sabin 0 analyze -s doo-sabin -k 3..8 && stdout_has analyze-doo-sabin "extraordinary face of k sides"
 for k in 3 5 8; do
   grep -qE "^interior k=$k +$((4 * k)) +1 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass ||
@@ -356,9 +357,18 @@ run depth-cc 0 depth "$meshes/cube.obj" -s catmull-clark --eps 0.01 --verify &&
   stdout_has depth-cc "verify: after 5 steps" && stdout_has depth-cc ": within"
 run depth-loop 0 depth "$meshes/tetrahedron.obj" -s loop --eps 0.01 --verify &&
   stdout_has depth-loop "bound (paper (regular) + analysis (extraordinary))" && stdout_has depth-loop "depth 3 would not have been enough"
-run depth-doo-sabin 1 depth "$meshes/cube.obj" -s doo-sabin --eps 0.01 && stderr_one_line depth-doo-sabin &&
-  stderr_has depth-doo-sabin "doo-sabin: the depth needs vertex-to-limit distances"
-run depth-bad-eps 1 depth "$meshes/cube.obj" -s loop --eps -1 && stderr_one_line depth-bad-eps
+run depth-doo-sabin 0 depth "$meshes/cube.obj" -s doo-sabin --eps 0.01 --verify &&
+  stdout_has depth-doo-sabin "bound (paper (regular) + analysis estimate (extraordinary)): distance to the limit after k >= 1 steps" &&
+  stdout_has depth-doo-sabin "extraordinary face of 3 sides" && stdout_has depth-doo-sabin "     4           1536           1538" &&
+  stdout_has depth-doo-sabin "verify: after 4 steps" && stdout_has depth-doo-sabin ": within"
+run depth-butterfly 1 depth "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 && stderr_one_line depth-butterfly &&
+  stderr_has depth-butterfly "butterfly: no depth bound for an interpolating scheme"
+run depth-verify-budget 1 depth "$meshes/cube.obj" -s loop --triangulate --eps 1e-8 --verify &&
+  stderr_one_line depth-verify-budget && stderr_has depth-verify-budget "--verify: depth 23 has" &&
+  stderr_has depth-verify-budget "over the verification budget of 2^28 faces"
+run depth-bad-eps 1 depth "$meshes/cube.obj" -s loop --eps -1 && stderr_one_line depth-bad-eps &&
+  stderr_has depth-bad-eps "--eps: must be a positive number, not -1" &&
+  { [ "$(wc -c <"$work/err")" -lt 120 ] && pass || fail "depth-bad-eps: message too long: $(cat "$work/err")"; }
 run depth-bad-file 1 depth "$data/index_out_of_range.obj" -s catmull-clark --eps 0.1 && stderr_one_line depth-bad-file
 
 # adaptive: fewer faces than uniform refinement, a closed output.

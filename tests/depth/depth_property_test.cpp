@@ -81,6 +81,8 @@ TEST(DepthProperty, BoundHoldsOnSharedMeshesAndPerturbations) {
   for (const std::string& file : kSharedMeshes) {
     const PolygonMesh original = read_mesh(dir + "/" + file).mesh;
     const double size = largest_extent(original);
+    // Not doo-sabin: its extraordinary-face term fails on cgal/3torus.obj,
+    // assimp/uv_sphere.obj and geomview/mushroom.obj (docs/design.md, "Depth").
     for (const char* scheme_name : {"loop", "catmull-clark", "loop-warren"}) {
       const Scheme& scheme = *find_scheme(scheme_name);
       const PolygonMesh mesh = for_scheme(original, scheme);
@@ -92,7 +94,7 @@ TEST(DepthProperty, BoundHoldsOnSharedMeshesAndPerturbations) {
 
 TEST(DepthProperty, BoundHoldsOnBundledMeshes) {
   for (const char* file : {"cube.obj", "tetrahedron.obj"})
-    for (const char* scheme_name : {"loop", "catmull-clark", "loop-warren"}) {
+    for (const char* scheme_name : {"loop", "catmull-clark", "loop-warren", "doo-sabin"}) {
       const Scheme& scheme = *find_scheme(scheme_name);
       check_bound_holds(for_scheme(read_mesh(test::bundled_path(file)).mesh, scheme), scheme, file);
     }

@@ -67,7 +67,7 @@ Command add_adaptive_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of an output vertex to its limit position")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--max-level", opt->max_level, "Refuse accuracies that need more uniform levels than this")
       ->capture_default_str()
       ->check(CLI::Range(0, 12));

@@ -3,7 +3,9 @@
 // depth costs, the accuracy/depth trade-off, and (--verify) a refinement that
 // measures how tight the bound is.
 
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -18,6 +20,10 @@
 namespace subdiv::cli {
 
 namespace {
+
+// The largest level --verify refines: 2^28 faces (about 4 GiB of face
+// arrays for quads); Index is 32-bit, so also at most 2^31 - 1 corners.
+constexpr std::int64_t kMaxVerifyFaces = std::int64_t{1} << 28;
 
 struct DepthCommandOptions {
   std::string input;
@@ -69,6 +75,13 @@ int run_depth(const DepthCommandOptions& opt) {
   print_trade_off(bound, opt.eps);
 
   if (opt.verify) {
+    const LevelCost& size = level_costs(file.mesh, scheme, depth).back();
+    if (size.faces > kMaxVerifyFaces || size.corners > std::numeric_limits<std::int32_t>::max() ||
+        size.vertices > std::numeric_limits<std::int32_t>::max())
+      throw InvalidInputError("--verify: depth " + std::to_string(depth) + " has " + std::to_string(size.faces) +
+                              " faces and " + std::to_string(size.vertices) + " vertices (" +
+                              std::to_string(size.bytes) + " bytes), over the verification budget of 2^28 faces; "
+                              "verify a larger --eps");
     const DepthCheck check = check_depth(file.mesh, scheme, bound, depth, options);
     std::printf("\nverify: after %d steps the largest vertex-to-limit distance is %.6g (bound %.6g, accuracy %g): %s\n",
                 depth, check.measured, check.bound, opt.eps, check.measured <= opt.eps ? "within" : "NOT within");
@@ -94,14 +107,15 @@ Command add_depth_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of a control vertex to the limit surface")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_flag("--verify", opt->verify, "Refine to the depth and measure the distances (exit 2 if one exceeds eps)");
   cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
   cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold, "Treat non-manifold elements as sharp");
   cmd->footer(
-      "Loop and Catmull-Clark use the bounds of 'A priori computation of the subdivision depth'\n"
-      "(Catmull-Clark with a term for extraordinary vertices from the analysis); other schemes\n"
-      "a bound from their eigenvalues. Sizes are counted, not computed.\n"
+      "Loop, Catmull-Clark and Doo-Sabin use the bounds of 'A priori computation of the subdivision\n"
+      "depth' (with a term for extraordinary vertices or faces from the analysis); other schemes a\n"
+      "bound from their eigenvalues. Doo-Sabin measures a vertex against the limit of its V-face.\n"
+      "Sizes are counted, not computed; --verify refuses levels over 2^28 faces.\n"
       "Example:\n"
       "  subdiv depth data/meshes/cube.obj -s catmull-clark --eps 0.01 --verify");
   return [opt] { return run_depth(*opt); };

@@ -62,7 +62,7 @@ Command add_info_command(CLI::App& app) {
   cmd->add_option("mesh", opt->path, "Mesh file (.obj, .ply or .off)")->required();
   cmd->add_option("--max-issues", opt->max_issues, "Validation issues listed (and kept per kind)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->footer(
       "Exit code 0 when the mesh is valid for subdivision (warnings such as isolated\n"
       "vertices allowed), 1 when it is not or cannot be read.\n"

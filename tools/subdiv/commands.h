@@ -3,6 +3,8 @@
 // CLI11 app and returns the function that runs it (returning the exit code).
 
 #include <functional>
+#include <limits>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -14,6 +16,20 @@ inline constexpr int kExitBadInput = 1;
 inline constexpr int kExitInternal = 2;
 
 using Command = std::function<int()>;
+
+/// A positive finite number; the message names the value given (CLI11's
+/// PositiveNumber prints the whole double range).
+inline CLI::Validator positive_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!CLI::detail::lexical_cast(text, value)) return "not a number: " + text;
+        if (!(value > 0.0) || value == std::numeric_limits<double>::infinity())
+          return "must be a positive number, not " + text;
+        return {};
+      },
+      "POSITIVE");
+}
 
 Command add_info_command(CLI::App& app);
 Command add_convert_command(CLI::App& app);

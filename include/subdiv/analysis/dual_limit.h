@@ -1,0 +1,42 @@
+#pragma once
+// Limit positions of a mesh's vertices under a dual-split scheme (Doo-Sabin).
+//
+// A dual split keeps no vertex: every child vertex is a corner point. A
+// vertex v's limit point is defined as the limit of its V-face, the face its
+// one-step children form around it (a k-gon, k = faces at v), i.e. the limit
+// point of the centre of that face configuration. It is read off the
+// analysis (`analyze(scheme, {interior, k})`: the eigenvalue-1 left
+// eigenvector over the k-gon and its ring of quads, cached per k), applied
+// to the child's neighbourhood of the V-face matched to the layout's order.
+// The mask is zero on the ring (a face's children depend on its own vertices
+// only), so the limit is the V-face's centroid; where the ring is not the
+// canonical one (a neighbouring non-quad) that face part alone is applied.
+// On a regular grid this is the biquadratic B-spline at v's parameter.
+//
+// Boundary vertices: the limit of the boundary curve (Chaikin's quadratic
+// B-spline of the boundary polygon) at v, (a + 6 v + b) / 8 with a, b its
+// boundary neighbours; normals are left zero there. Interior vertices with
+// fewer than 3 faces (no V-face) and isolated vertices keep their position
+// and are counted as approximated.
+
+#include "subdiv/analysis/limit.h"
+#include "subdiv/mesh/topology.h"
+
+namespace subdiv {
+
+/// `limit_positions()` for `scheme.split == SplitRule::dual` (it dispatches
+/// here). `route`, `isolation_levels` and `max_resolve_levels` do not apply:
+/// one step is always taken. Throws as refine() does for meshes it cannot
+/// refine, and InvalidInputError for a scheme of another split.
+LimitResult dual_limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options = {});
+
+/// The child's neighbourhood of face f in the order of the dual ring
+/// layout's combinatorics: f's vertices from its first corner in face order,
+/// then, for each of them in turn, the vertices of its other faces
+/// (counter-clockwise after f, each face from the corner after the shared
+/// vertex), those already listed skipped. `regular` tells whether it is the
+/// canonical neighbourhood: every vertex of f interior with 4 faces, all
+/// quads besides f.
+std::vector<Index> face_neighbourhood(const MeshTopology& topology, Index f, bool& regular);
+
+}  // namespace subdiv

@@ -1,0 +1,228 @@
+// Doo-Sabin limit positions (the limit of each vertex's V-face) and the
+// Doo-Sabin depth bound built on them (docs/design.md, "Depth").
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "subdiv/analysis/analyze.h"
+#include "subdiv/analysis/dual_limit.h"
+#include "subdiv/analysis/limit.h"
+#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/core/error.h"
+#include "subdiv/depth/depth.h"
+#include "subdiv/depth/mesh_measures.h"
+#include "subdiv/io/mesh_io.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/mesh/triangulate.h"
+#include "subdiv/refine/refine.h"
+#include "subdiv/rules/doo_sabin.h"
+#include "subdiv/rules/scheme.h"
+#include "depth/depth_test_meshes.h"
+#include "support/test_meshes.h"
+
+namespace subdiv {
+namespace {
+
+// The centred quadratic B-spline.
+double quadratic_bspline(double t) {
+  const double a = std::fabs(t);
+  if (a <= 0.5) return 0.75 - a * a;
+  if (a <= 1.5) return 0.5 * (1.5 - a) * (1.5 - a);
+  return 0.0;
+}
+
+TEST(DualLimit, RegularTorusIsTheBiquadraticSplineAtEachVertex) {
+  // On a regular grid Doo-Sabin is the biquadratic B-spline with the control
+  // points at the integer parameters: the limit of vertex (i, j)'s V-face
+  // centre is the spline at (i, j).
+  const int n = 6, m = 8;
+  std::mt19937 random(7);
+  const PolygonMesh torus = perturbed(quad_torus(n, m, 3.0, 1.0), 0.3, random);
+  const LimitResult limit = limit_positions(torus, doo_sabin_scheme());
+  EXPECT_EQ(limit.approximated, 0);
+  ASSERT_EQ(limit.positions.size(), torus.positions.size());
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      Vec3 spline;
+      for (int a = -2; a <= 2; ++a)
+        for (int b = -2; b <= 2; ++b)
+          spline += quadratic_bspline(a) * quadratic_bspline(b) *
+                    torus.positions[static_cast<std::size_t>(((i + a + n) % n) * m + (j + b + m) % m)];
+      const auto v = static_cast<std::size_t>(i * m + j);
+      EXPECT_LT(norm(limit.positions[v] - spline), 1e-12) << "vertex " << i << ", " << j;
+      EXPECT_EQ(limit.sources[v], LimitSource::generic);
+    }
+}
+
+TEST(DualLimit, FaceConfigurationMaskIsTheFaceCentroid) {
+  // A face's children (its F-face) depend on its own vertices only, and the
+  // face map keeps the centroid: the eigenvalue-1 mask is 1/k on the k-gon
+  // and zero on its ring, whatever the matching.
+  for (int k = 3; k <= 8; ++k) {
+    AnalysisOptions options;
+    options.characteristic_map = false;
+    const ConfigurationAnalysis a = analyze(doo_sabin_scheme(), {Configuration::Kind::interior, k}, options);
+    ASSERT_TRUE(a.limit_mask) << k;
+    ASSERT_EQ(a.limit_mask->size(), 4 * k);
+    for (int i = 0; i < 4 * k; ++i) EXPECT_NEAR((*a.limit_mask)[i], i < k ? 1.0 / k : 0.0, 1e-10) << k << " " << i;
+    EXPECT_NEAR(std::abs(a.leading[1]), 0.5, 1e-9) << k;
+  }
+}
+
+TEST(DualLimit, ExtraordinaryVerticesTakeTheCentroidOfTheirVFace) {
+  // The cube's vertices have 3 faces: V-faces are triangles, not in a
+  // canonical ring; the limit is the triangle's centroid in the child.
+  std::mt19937 random(9);
+  const PolygonMesh cube = perturbed(read_mesh(test::bundled_path("cube.obj")).mesh, 0.1, random);
+  const PolygonMesh child = refine(cube, doo_sabin_scheme());
+  const MeshTopology t(cube);
+  const LimitResult limit = limit_positions(cube, doo_sabin_scheme());
+  EXPECT_EQ(limit.approximated, 0);
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    Vec3 centroid;
+    for (const Index c : t.vertex_corners(v)) centroid += child.positions[static_cast<std::size_t>(c)];
+    centroid = (1.0 / static_cast<double>(t.vertex_corners(v).size())) * centroid;
+    EXPECT_LT(norm(limit.positions[static_cast<std::size_t>(v)] - centroid), 1e-12) << v;
+    const Vec3 normal = limit.normals[static_cast<std::size_t>(v)];
+    EXPECT_NEAR(norm(normal), 1.0, 1e-12);
+    EXPECT_GT(dot(normal, cube.positions[static_cast<std::size_t>(v)]), 0.0) << "outward, like the faces";
+  }
+}
+
+TEST(DualLimit, VFacesShrinkToTheLimit) {
+  // Each vertex's limit is where its V-face's nested F-faces shrink to: the
+  // F-face of child face f is child face f (dual_split.cpp), and its
+  // vertices close in on the limit by 1/2 per step (lambda_1).
+  std::mt19937 random(4);
+  const PolygonMesh mesh = perturbed(read_mesh(test::bundled_path("cube.obj")).mesh, 0.2, random);
+  const MeshTopology t(mesh);
+  const LimitResult limit = limit_positions(mesh, doo_sabin_scheme());
+  PolygonMesh level = refine(mesh, doo_sabin_scheme());
+  std::vector<double> first(static_cast<std::size_t>(t.vertex_count()));
+  const auto spread = [&](Index v) {
+    double worst = 0.0;
+    // V-faces follow the F- and E-faces, one per vertex (all have faces).
+    const Index f = t.face_count() + t.edge_count() + v;
+    for (const Index w : level.face(f))
+      worst = std::max(worst, norm(level.positions[static_cast<std::size_t>(w)] - limit.positions[static_cast<std::size_t>(v)]));
+    return worst;
+  };
+  for (Index v = 0; v < t.vertex_count(); ++v) first[static_cast<std::size_t>(v)] = spread(v);
+  for (int l = 0; l < 6; ++l) level = refine(level, doo_sabin_scheme());
+  for (Index v = 0; v < t.vertex_count(); ++v)
+    EXPECT_LT(spread(v), first[static_cast<std::size_t>(v)] * std::pow(0.5, 6) * 1.5) << v;
+}
+
+double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 d = b - a;
+  const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
+  return norm(p - (a + t * d));
+}
+
+TEST(DualLimit, BoundaryVerticesLieOnTheBoundaryCurve) {
+  // The child boundary polygon is Chaikin's refinement of the parent's: the
+  // boundary limit at v is the quadratic B-spline there, (a + 6 v + b) / 8,
+  // which the refined boundary polygon approaches like 4^-level.
+  std::mt19937 random(2);
+  const PolygonMesh grid = perturbed(test::quad_grid(4, 3), 0.2, random);
+  const MeshTopology t(grid);
+  const LimitResult limit = limit_positions(grid, doo_sabin_scheme());
+  EXPECT_EQ(limit.approximated, 0);
+  PolygonMesh level = grid;
+  for (int l = 0; l < 8; ++l) level = refine(level, doo_sabin_scheme());
+  const MeshTopology fine(level);
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    if (t.vertex_kind(v) != VertexKind::boundary) continue;
+    EXPECT_EQ(limit.sources[static_cast<std::size_t>(v)], LimitSource::closed_form);
+    double nearest = 1e300;
+    for (Index e = 0; e < fine.edge_count(); ++e)
+      if (fine.is_boundary_edge(e)) {
+        const auto ends = fine.edge_vertices(e);
+        nearest = std::min(nearest, segment_distance(limit.positions[static_cast<std::size_t>(v)],
+                                                     level.positions[static_cast<std::size_t>(ends[0])],
+                                                     level.positions[static_cast<std::size_t>(ends[1])]));
+      }
+    EXPECT_LT(nearest, 1e-4) << v;
+  }
+}
+
+TEST(DualLimit, NeighbourhoodWalkIsCanonicalOnTheLayout) {
+  for (int k = 3; k <= 6; ++k) {
+    const RingMesh ring = ring_mesh(SplitRule::dual, {Configuration::Kind::interior, k}, 1);
+    const MeshTopology t(ring.mesh);
+    bool regular = false;
+    const std::vector<Index> walk = face_neighbourhood(t, ring.centre_face, regular);
+    EXPECT_TRUE(regular);
+    EXPECT_EQ(walk.size(), static_cast<std::size_t>(4 * k));
+  }
+}
+
+TEST(DooSabinDepth, PaperBoundAfterTheFirstStepPlusExtraordinaryFaces) {
+  const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
+  const DepthBound bound = depth_bound(cube, doo_sabin_scheme());
+  EXPECT_EQ(bound.start, 1);
+  ASSERT_EQ(bound.terms.size(), 2u);
+  EXPECT_EQ(bound.source, "paper (regular) + analysis estimate (extraordinary)");
+  const PolygonMesh first = refine(cube, doo_sabin_scheme());
+  EXPECT_EQ(bound.terms[0].amplitude, max_second_difference(first) / 4.0);
+  EXPECT_EQ(bound.terms[0].rate, 0.25);
+  EXPECT_NE(bound.terms[1].what.find("face of 3 sides"), std::string::npos) << bound.terms[1].what;
+  EXPECT_NEAR(bound.terms[1].rate, 0.5, 1e-9);
+  EXPECT_EQ(bound.terms[1].amplitude, limit_distances(first, doo_sabin_scheme()).max);
+  const int depth = bound.depth_for(0.01);
+  const DepthCheck check = check_depth(cube, doo_sabin_scheme(), bound, depth);
+  EXPECT_LE(check.measured, 0.01);
+  EXPECT_EQ(check.approximated, 0);
+}
+
+TEST(DooSabinDepth, RegularTorusHasThePaperBoundOnly) {
+  std::mt19937 random(13);
+  const PolygonMesh torus = perturbed(quad_torus(8, 6, 3.0, 1.0), 0.2, random);
+  const DepthBound bound = depth_bound(torus, doo_sabin_scheme());
+  ASSERT_EQ(bound.terms.size(), 1u);
+  EXPECT_EQ(bound.source, "paper");
+  PolygonMesh level = refine(torus, doo_sabin_scheme());
+  for (int k = 1; k <= 4; ++k) {
+    EXPECT_LE(limit_distances(level, doo_sabin_scheme()).max, bound.at(k)) << "level " << k;
+    level = refine(level, doo_sabin_scheme());
+  }
+}
+
+TEST(DooSabinDepth, LevelCostsMatchRefinement) {
+  std::vector<PolygonMesh> meshes = {read_mesh(test::bundled_path("cube.obj")).mesh,
+                                     read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh,
+                                     test::quad_grid(3, 2)};
+  for (const PolygonMesh& mesh : meshes) {
+    const std::vector<LevelCost> costs = level_costs(mesh, doo_sabin_scheme(), 3);
+    PolygonMesh level = mesh;
+    for (const LevelCost& cost : costs) {
+      const MeshTopology t(level);
+      EXPECT_EQ(cost.vertices, level.vertex_count()) << "level " << cost.level;
+      EXPECT_EQ(cost.faces, level.face_count()) << "level " << cost.level;
+      EXPECT_EQ(cost.corners, level.corner_count()) << "level " << cost.level;
+      EXPECT_EQ(cost.edges, t.edge_count()) << "level " << cost.level;
+      level = refine(level, doo_sabin_scheme());
+    }
+  }
+}
+
+TEST(DepthBound, ButterflySchemesAreRefusedAsInterpolating) {
+  const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
+  for (const char* name : {"butterfly", "modified-butterfly"}) {
+    const Scheme& scheme = *find_scheme(name);
+    try {
+      (void)depth_bound(scheme.needs_triangles ? triangulate(cube) : cube, scheme);
+      ADD_FAILURE() << name << " was not refused";
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find("interpolating"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace subdiv
