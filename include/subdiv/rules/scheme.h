@@ -140,6 +140,11 @@ struct Scheme {
   LimitMaskFunction limit_masks = nullptr;
   CornerMask corner_point = nullptr;  ///< dual split only
   BoundaryPointMask boundary_point = nullptr;  ///< dual split only
+  /// Refinement steps per analysis step: the number of steps after which a
+  /// configuration repeats (1 for the primal and dual splits; 2 for schemes
+  /// such as sqrt3 and 4-8 whose layout turns on every step). The analysis
+  /// reads the matrix of `period` composed steps.
+  int period = 1;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.
