@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -83,6 +84,33 @@ CurvatureBehaviour curvature_of(const std::vector<std::complex<double>>& l, doub
   return mu < lambda2 ? CurvatureBehaviour::zero : CurvatureBehaviour::unbounded;
 }
 
+// Boundary and corner configurations: whether the characteristic map's
+// control points x, y vanish on the boundary curve (the centre and the
+// neighbourhood's points on the first and last ray). Under the curve rules
+// the curve's rows use the curve alone, so an eigenvector of an eigenvalue
+// the curve does not have is zero there: when both subdominant eigenvalues
+// are such, the map collapses the boundary curve to the centre.
+bool collapses_boundary(const LocalSubdivisionMatrix& m, const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
+  if (m.configuration.kind == Configuration::Kind::interior) return false;
+  constexpr double kLayout = 1e-9;
+  auto angle = [](Vec3 p) {
+    const double a = std::atan2(p.y, p.x);
+    return a < -kLayout ? a + 2.0 * std::numbers::pi : std::max(a, 0.0);
+  };
+  double last = 0.0;
+  for (const Vec3& p : m.layout)
+    if (norm(p) > kLayout) last = std::max(last, angle(p));
+  const double scale = std::max(x.cwiseAbs().maxCoeff(), y.cwiseAbs().maxCoeff());
+  if (!(scale > 0.0)) return false;
+  for (std::size_t a = 0; a < m.layout.size(); ++a) {
+    const Vec3 p = m.layout[a];
+    const bool on_curve = norm(p) <= kLayout || angle(p) <= kLayout || std::fabs(angle(p) - last) <= kLayout;
+    const auto i = static_cast<Eigen::Index>(a);
+    if (on_curve && std::max(std::fabs(x[i]), std::fabs(y[i])) > 1e-9 * scale) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration, const AnalysisOptions& options) {
@@ -128,6 +156,9 @@ ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configu
     a.reason = "Reif's criterion: eigenvalue condition, characteristic map regular and injective";
   } else {
     a.reason = "characteristic map: " + a.characteristic_map->note;
+    if (!a.characteristic_map->regular && collapses_boundary(a.wide_matrix, pair->vectors[0], pair->vectors[1]))
+      a.reason += "; the subdominant eigenvectors vanish on the boundary curve (lambda_1, lambda_2 are not the "
+                  "curve's eigenvalues), so the map collapses the boundary to the centre";
   }
   return a;
 }

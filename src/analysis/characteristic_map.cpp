@@ -99,12 +99,14 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
   // Level by level: the per-level tables are the masks themselves, much
   // smaller than one composed table. A child vertex is valid when every
   // parent its mask uses is.
+  // `levels` analysis steps: the scheme's period refinement steps each.
+  const int steps = levels * matrix.period;
   RefineOptions options = matrix.rules;
-  options.levels = levels;
+  options.levels = steps;
   const std::vector<StencilTable> tables = refine_stencils(ring.mesh, scheme, options);
   const Scheme& placement = layout_placement(scheme.split);
   RefineOptions linear;
-  linear.levels = levels;
+  linear.levels = steps;
   const PolygonMesh layout = refine(ring.mesh, placement, linear);
   std::vector<Vec3> points = control.positions;
   std::vector<char> valid = in_neighbourhood;
@@ -125,7 +127,7 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
   // The valid vertices, renumbered.
   std::vector<Index> kept(points.size(), kInvalidIndex);
   CharacteristicMap map;
-  map.levels = levels;
+  map.levels = levels;  // analysis steps
   for (std::size_t r = 0; r < points.size(); ++r) {
     if (!valid[r]) continue;
     kept[r] = map.image.vertex_count();

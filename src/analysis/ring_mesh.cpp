@@ -122,24 +122,55 @@ const Scheme& layout_placement(SplitRule split) {
   return *find_scheme(split == SplitRule::quad ? "bilinear" : "linear");
 }
 
-std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring) {
-  RefineOptions once;
-  once.levels = 1;
-  PolygonMesh child = refine(ring.mesh, layout_placement(split), once);
-  if (split == SplitRule::dual) {
-    const MeshTopology t(ring.mesh);
+std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels) {
+  if (levels < 1) throw InvalidInputError("child layout: levels must be >= 1, not " + std::to_string(levels));
+  if (split != SplitRule::dual) {
+    RefineOptions down;
+    down.levels = levels;
+    return refine(ring.mesh, layout_placement(split), down).positions;
+  }
+  // The dual split, one level at a time: each level's faces need the layout
+  // points they surround.
+  RingMesh level = ring;
+  for (int l = 0; l < levels; ++l) {
+    RefineOptions once;
+    once.levels = 1;
+    PolygonMesh child = refine(level.mesh, layout_placement(split), once);
+    const MeshTopology t(level.mesh);
     for (Index c = 0; c < t.corner_count(); ++c)  // child vertex c = corner point of corner c
       child.positions[static_cast<std::size_t>(c)] =
-          0.5 * (ring.mesh.positions[static_cast<std::size_t>(t.corner_vertex(c))] +
-                 ring.face_centres[static_cast<std::size_t>(t.corner_face(c))]);
+          0.5 * (level.mesh.positions[static_cast<std::size_t>(t.corner_vertex(c))] +
+                 level.face_centres[static_cast<std::size_t>(t.corner_face(c))]);
+    if (l + 1 == levels) return child.positions;
+    // Child faces as the dual split numbers them: F-faces, E-faces, V-faces
+    // (of vertices that have one).
+    RingMesh next;
+    next.centre = kInvalidIndex;
+    next.centre_face = level.centre_face;  // the centre's F-face
+    for (Index f = 0; f < t.face_count(); ++f) next.face_centres.push_back(level.face_centres[static_cast<std::size_t>(f)]);
+    for (Index e = 0; e < t.edge_count(); ++e) {
+      const auto sides = t.edge_corners(e);
+      Vec3 point;
+      for (const Index c : sides) point += level.face_centres[static_cast<std::size_t>(t.corner_face(c))];
+      next.face_centres.push_back((1.0 / static_cast<double>(sides.size())) * point);
+    }
+    for (Index v = 0; v < t.vertex_count(); ++v) {
+      const auto corners = t.vertex_corners(v);
+      if (corners.empty() || (t.vertex_kind(v) != VertexKind::boundary && corners.size() < 3)) continue;
+      next.face_centres.push_back(level.mesh.positions[static_cast<std::size_t>(v)]);
+    }
+    if (static_cast<Index>(next.face_centres.size()) != child.face_count())
+      throw InvalidInputError("child layout: the dual split's child faces are not F-, E- and V-faces");
+    next.mesh = std::move(child);
+    level = std::move(next);
   }
-  return child.positions;
+  return {};
 }
 
 RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int rings) {
   if (split == SplitRule::midedge)
-    throw InvalidInputError("the midedge split repeats its configurations only every two steps; the analysis reads "
-                            "one step");
+    throw InvalidInputError("the midedge split repeats its configurations only every two steps, and the analysis has "
+                            "no ring layout for it");
   if (split == SplitRule::dual) {
     if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
     return dual_ring_mesh(configuration, rings);

@@ -80,13 +80,17 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
   std::vector<int> column(static_cast<std::size_t>(ring.mesh.vertex_count()), -1);
   for (std::size_t b = 0; b < coarse.size(); ++b) column[static_cast<std::size_t>(coarse[b])] = static_cast<int>(b);
 
-  // One step of the scheme as a stencil table, and of the split's own linear
-  // placement to find where each neighbourhood vertex went.
+  // One analysis step (the scheme's period: that many refinement steps,
+  // composed) as a stencil table, and the split's own linear placement as
+  // many levels down to find where each neighbourhood vertex went.
+  if (scheme.period < 1)
+    throw InvalidInputError(std::string(scheme.name) + ": period must be >= 1, not " + std::to_string(scheme.period));
   RefineOptions once = rules;
-  once.levels = 1;
+  once.levels = scheme.period;
   once.on_level = nullptr;
   const StencilTable table = refine_stencil_table(ring.mesh, scheme, once);
-  const std::vector<Vec3> layout_child = child_layout(scheme.split, ring);
+  const std::vector<Vec3> layout_child = child_layout(scheme.split, ring, scheme.period);
+  const double shrink = std::ldexp(1.0, -scheme.period);
   std::vector<Index> all_child(layout_child.size());
   std::iota(all_child.begin(), all_child.end(), 0);
 
@@ -94,13 +98,14 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
   m.configuration = configuration;
   m.rules = once;
   m.rings = rings;
+  m.period = scheme.period;
   const auto n = static_cast<Eigen::Index>(coarse.size());
   m.S = Eigen::MatrixXd::Zero(n, n);
   for (Eigen::Index a = 0; a < n; ++a) {
     const Vec3 p = positions[static_cast<std::size_t>(coarse[static_cast<std::size_t>(a)])];
     m.layout.push_back(p);
     m.ring_of.push_back(ring_number[static_cast<std::size_t>(coarse[static_cast<std::size_t>(a)])]);
-    const Index child = vertex_at(layout_child, all_child, 0.5 * p);
+    const Index child = vertex_at(layout_child, all_child, shrink * p);
     if (child == kInvalidIndex) throw InvalidInputError(configuration.name() + ": no child vertex at a neighbourhood point");
     const auto vertices = table.row_vertices(child);
     const auto weights = table.row_weights(child);
@@ -111,7 +116,7 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
       } else if (weights[e] != 0.0 && m.invariant) {
         m.invariant = false;
         m.invariance_note = "neighbourhood vertex " + std::to_string(a) + " (ring " + std::to_string(m.ring_of.back()) +
-                            ") one level down uses a vertex outside the " + std::to_string(rings) + "-ring";
+                            ") one step down uses a vertex outside the " + std::to_string(rings) + "-ring";
       }
     }
   }

@@ -168,7 +168,15 @@ TEST(Analyze, PlainBoundaryRulesFailAtHighValence) {
     EXPECT_NE(a.verdict, SmoothnessVerdict::c1) << k;
     ASSERT_TRUE(a.characteristic_map.has_value());
     EXPECT_FALSE(a.characteristic_map->regular) << k;
+    // lambda_1, lambda_2 above the curve's 1/2: their eigenvectors vanish on
+    // the boundary curve, which the map sends to the centre.
+    EXPECT_NE(a.reason.find("collapses the boundary"), std::string::npos) << a.reason;
   }
+  const ConfigurationAnalysis loop7 = analyze(loop_scheme(), boundary(7));
+  EXPECT_TRUE(loop7.eigenvalue_condition);
+  EXPECT_NEAR(std::abs(loop7.leading[3]), 0.5, 1e-10);
+  EXPECT_GT(std::abs(loop7.leading[2]), 0.53);
+  EXPECT_NE(loop7.reason.find("collapses the boundary"), std::string::npos) << loop7.reason;
 }
 
 }  // namespace

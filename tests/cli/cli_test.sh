@@ -178,6 +178,27 @@ if command -v python3 >/dev/null 2>&1; then
   python3 -c 'import json, sys; assert len(json.load(sys.stdin)["configurations"]) == 3' <"$work/out" &&
     pass || fail "analyze --json: not valid JSON with 3 configurations"
 fi
+# Loop's printed numbers against its closed forms (the full check against
+# independently written matrices is tests/analysis/independent_spectra_test).
+run analyze-loop-json 0 analyze -s loop -k 3..12 --json --no-charmap && stdout_has analyze-loop-json '"period": 1'
+if command -v python3 >/dev/null 2>&1; then
+  python3 -c '
+import json, math, sys
+doc = json.load(sys.stdin)
+assert [c["k"] for c in doc["configurations"]] == list(range(3, 13))
+for c in doc["configurations"]:
+    k = c["k"]
+    lam = 3 / 8 + math.cos(2 * math.pi / k) / 4
+    beta = (5 / 8 - lam * lam) / k
+    chi = 8 * beta / (3 + 8 * k * beta)
+    assert c["period"] == 1 and c["matrix_size"] == k + 1, c["name"]
+    assert abs(c["leading_eigenvalues"][1]["re"] - lam) < 1e-10, c["name"]
+    assert abs(c["leading_eigenvalues"][2]["re"] - lam) < 1e-10, c["name"]
+    assert abs(c["limit_mask"][0] - (1 - k * chi)) < 1e-10, c["name"]
+    assert all(abs(w - chi) < 1e-10 for w in c["limit_mask"][1:]), c["name"]
+    assert c["eigenvalue_condition"], c["name"]
+' <"$work/out" && pass || fail "analyze -s loop --json: lambda_1 or the limit mask differ from Loop's closed forms"
+fi
 run analyze-plots 0 analyze -s loop -k 3..6 --plot-spectrum "$work/spectrum.png" --plot-charmap 5 "$work/charmap.svg"
 [ "$(head -c 8 "$work/spectrum.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] && pass ||
   fail "analyze --plot-spectrum: not a PNG"

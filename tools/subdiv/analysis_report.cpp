@@ -45,6 +45,8 @@ nlohmann::json configuration_json(const ConfigurationAnalysis& a) {
   j["kind"] = kind_name(c.kind);
   j["k"] = c.k;
   if (c.kind == Configuration::Kind::corner) j["corner"] = to_string(c.corner);
+  // Refinement steps per analysis step: S and its spectrum span that many.
+  j["period"] = a.matrix.period;
   j["rings"] = a.matrix.rings;
   j["matrix_size"] = a.matrix.S.rows();
   j["invariant"] = a.matrix.invariant;
@@ -124,6 +126,9 @@ std::string format_analysis_table(std::string_view scheme, const std::vector<Con
     for (std::size_t c = 0; c < kColumns; ++c) width[c] = std::max(width[c], r[c].size());
 
   std::string out = fmt::format("scheme {}\n", scheme);
+  if (!results.empty() && results.front().matrix.period > 1)
+    out = fmt::format("scheme {} (period {}: S spans {} refinement steps)\n", scheme, results.front().matrix.period,
+                      results.front().matrix.period);
   for (const Row& r : rows) {
     std::string line;
     for (std::size_t c = 0; c < kColumns; ++c) {

@@ -351,15 +351,13 @@ std::string render_characteristic_map_plot(const CharacteristicMapPlot& plot, Im
     }
     cairo_close_path(cr);
   };
-  // The first face with an orientation sets the reference; folded or
-  // degenerate faces (0) are always marked, so a degenerate first face does
-  // not paint the whole map red.
-  int reference = 0;
-  for (const int o : plot.face_orientation)
-    if (o != 0) {
-      reference = o;
-      break;
-    }
+  // The majority orientation is the reference, as in the regularity verdict
+  // (characteristic_map()): faces against it, and folded or degenerate
+  // faces (0), are marked, so a reversed or degenerate first face does not
+  // paint the whole map red.
+  const auto positive = std::count(plot.face_orientation.begin(), plot.face_orientation.end(), 1);
+  const auto negative = std::count(plot.face_orientation.begin(), plot.face_orientation.end(), -1);
+  const int reference = positive == 0 && negative == 0 ? 0 : positive >= negative ? 1 : -1;
   auto is_marked = [&](std::size_t f) {
     return plot.face_orientation[f] == 0 || plot.face_orientation[f] != reference;
   };
@@ -374,7 +372,7 @@ std::string render_characteristic_map_plot(const CharacteristicMapPlot& plot, Im
     cairo_set_line_width(cr, 0.4);
     cairo_stroke(cr);
   }
-  // Faces whose Jacobian sign differs from the first face's go on top.
+  // Faces whose Jacobian sign differs from the majority's go on top.
   for (std::size_t f = 0; f < plot.faces.size(); ++f) {
     if (!is_marked(f)) continue;
     ++marked;

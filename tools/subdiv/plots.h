@@ -44,7 +44,7 @@ struct CharacteristicMapPlot {
   std::vector<std::array<double, 2>> points;
   std::vector<std::vector<int>> faces;
   std::vector<int> face_sector;       ///< colour of each face
-  std::vector<int> face_orientation;  ///< faces unlike the first are marked
+  std::vector<int> face_orientation;  ///< faces unlike the majority are marked
 };
 
 /// The image bytes. Throws InvalidInputError for malformed data (indices

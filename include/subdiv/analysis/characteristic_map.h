@@ -18,7 +18,7 @@
 namespace subdiv {
 
 struct CharacteristicMap {
-  int levels = 0;
+  int levels = 0;  ///< analysis steps (the scheme's period refinement steps each)
   /// The refined control net of the map: positions (x, y, 0), faces.
   PolygonMesh image;
   /// Per face of `image`: the sector of the ring it lies in (0 .. k-1) and
@@ -34,7 +34,8 @@ struct CharacteristicMap {
 };
 
 /// The map with control points (x_i, y_i) on the neighbourhood of `matrix`
-/// (in its order), refined `levels` times with `scheme`.
+/// (in its order), refined `levels` analysis steps (levels * matrix.period
+/// refinement steps) with `scheme`.
 CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisionMatrix& matrix,
                                      const Eigen::VectorXd& x, const Eigen::VectorXd& y, int levels = 4);
 

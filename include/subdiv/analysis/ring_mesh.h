@@ -7,8 +7,9 @@
 // grid point (i, j) sits at i u_s + j u_(s+1), u_s the unit
 // vector of ray s. Within a sector the layout is linear, so the split's own
 // placement (face centroids, edge midpoints) puts the child of a layout
-// point p at p / 2: that is how analysis identifies a neighbourhood with
-// its image one level down.
+// point p at p / 2 (and its descendant n levels down at p / 2^n): that is
+// how analysis identifies a neighbourhood with its image one analysis step
+// (the scheme's period) down.
 
 #include "subdiv/analysis/configuration.h"
 #include "subdiv/mesh/polygon_mesh.h"
@@ -47,11 +48,15 @@ RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int ring
 /// the child_layout positions).
 const Scheme& layout_placement(SplitRule split);
 
-/// Positions of the ring mesh's child vertices one level down such that the
-/// child of layout point p is at p / 2 (within a sector the layout is
-/// linear): the split's own placement for the primal splits; for the dual
-/// split the corner point of corner v of face f at (v + face_centres[f]) / 2.
-/// The analysis identifies a neighbourhood with its image by them.
-std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring);
+/// Positions of the ring mesh's descendants `levels` levels down such that
+/// the descendant of layout point p is at p / 2^levels (within a sector the
+/// layout is linear): the split's own placement for the primal splits
+/// (refined `levels` times); for the dual split, level by level, the corner
+/// point of corner v of face f at (v + face_centres[f]) / 2, each child face
+/// surrounding its parent element's layout point (an F-face its face's, an
+/// E-face the midpoint of its faces' points, a V-face its vertex). The
+/// analysis identifies a neighbourhood with its image `period` steps down
+/// by them. Throws InvalidInputError for levels < 1.
+std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels = 1);
 
 }  // namespace subdiv

@@ -1,9 +1,10 @@
 #pragma once
 // The local subdivision matrix of a scheme at one configuration, read off
 // the scheme's own refinement (Zorin's survey, section 2.1): build the
-// configuration's ring mesh, refine it once with the ordinary engine into a
-// stencil table, and restrict the rows of the neighbourhood's image one level
-// down to the neighbourhood's columns. No weight is written twice: the
+// configuration's ring mesh, refine it one analysis step (the scheme's
+// period: one refinement step for most schemes) with the ordinary engine
+// into a stencil table, and restrict the rows of the neighbourhood's image
+// that many levels down to the neighbourhood's columns. No weight is written twice: the
 // matrix holds exactly what refinement computes.
 
 #include <Eigen/Core>
@@ -19,13 +20,17 @@ namespace subdiv {
 
 struct LocalSubdivisionMatrix {
   Configuration configuration;
-  /// The rules the ring mesh was refined with (levels aside).
+  /// The rules the ring mesh was refined with; levels = period.
   RefineOptions rules;
+  /// Refinement steps S spans: the scheme's period (S is the matrix of that
+  /// many composed steps, its eigenvalues those of one step to that power).
+  int period = 1;
   /// The neighbourhood: the centre and the vertices of the faces within
   /// this many face rings of it (1: Catmull-Clark's 2k + 1, Loop's k + 1).
   int rings = 1;
-  /// Row a: the neighbourhood's vertex a one level down, as weights on the
-  /// neighbourhood's vertices now (p_next = S p).
+  /// Row a: the neighbourhood's vertex a one analysis step (`period`
+  /// levels) down, as weights on the neighbourhood's vertices now
+  /// (p_next = S p).
   Eigen::MatrixXd S;
   /// Each neighbourhood vertex's position in the planar layout, in the
   /// order of S: the centre first, then ring by ring, counter-clockwise from
@@ -51,8 +56,9 @@ inline int ring_mesh_size(int rings) { return rings + 2; }
 
 /// The matrix of `scheme` at `configuration` over a neighbourhood of `rings`
 /// face rings, refined under `rules` (boundary rules, flatness; its level
-/// count is ignored). Throws InvalidInputError for schemes or configurations
-/// the ring layout does not cover.
+/// count is ignored: the matrix spans scheme.period levels). Throws
+/// InvalidInputError for schemes or configurations the ring layout does not
+/// cover, and for a period below 1.
 LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings,
                                                 const RefineOptions& rules = {});
 

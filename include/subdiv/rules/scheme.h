@@ -153,6 +153,11 @@ struct Scheme {
   SchemeParameters parameters = {};
   /// Whether the masks read parameters.tension (the CLI's --tension).
   bool takes_tension = false;
+  /// Refinement steps per analysis step: the number of steps after which a
+  /// configuration repeats (1 for the primal and dual splits; 2 for schemes
+  /// such as sqrt3 and 4-8 whose layout turns on every step). The analysis
+  /// reads the matrix of `period` composed steps.
+  int period = 1;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.
