@@ -101,6 +101,14 @@ for scheme in butterfly modified-butterfly; do
   run "refine-$scheme-quads" 1 refine "$meshes/cube.obj" -s "$scheme" -o "$work/$scheme.obj"
   stderr_one_line "refine-$scheme-quads" && stderr_has "refine-$scheme-quads" "needs a triangle mesh"
 done
+# Butterfly's tension: w = 0 is the linear scheme on a closed mesh.
+run refine-butterfly-w0 0 refine "$meshes/cube.obj" -s butterfly --triangulate --tension 0 -l 2 -o "$work/bw0.obj"
+run refine-linear 0 refine "$meshes/cube.obj" -s linear --triangulate -l 2 -o "$work/lin.obj"
+cmp -s "$work/bw0.obj" "$work/lin.obj" && pass || fail "butterfly --tension 0 differs from linear"
+run refine-tension-loop 1 refine "$meshes/cube.obj" -s loop --triangulate --tension 0.1 -o "$work/x.obj" &&
+  stderr_one_line refine-tension-loop && stderr_has refine-tension-loop "--tension applies to butterfly"
+run analyze-butterfly-tension 0 analyze -s butterfly -k 6 --tension 0.04 --no-charmap &&
+  stdout_has analyze-butterfly-tension "0.500000  0.500000    0.400000"
 run refine-doo-sabin 0 refine "$meshes/cube.obj" -s doo-sabin -l 2 -o "$work/ds.obj" --stats
 stdout_has refine-doo-sabin "level 1: 24 vertices, 26 faces" && stdout_has refine-doo-sabin "level 2: 96 vertices, 98 faces"
 run refine-doo-sabin-info 0 info "$work/ds.obj" && stdout_has refine-doo-sabin-info "validation      ok"

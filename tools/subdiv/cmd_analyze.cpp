@@ -42,6 +42,7 @@ struct AnalyzeCommandOptions {
   std::optional<double> angle_degrees;
   std::string boundary_rules = "standard";
   std::optional<double> flatness;
+  std::optional<double> tension;
 };
 
 int parse_int(std::string_view text, const std::string& what) {
@@ -136,9 +137,19 @@ int run_curve_analysis(const CurveScheme& curve, const AnalyzeCommandOptions& op
 }
 
 int run_analyze(const AnalyzeCommandOptions& opt) {
-  if (const CurveScheme* curve = find_curve_scheme(opt.scheme); curve && !find_scheme(opt.scheme))
-    return run_curve_analysis(*curve, opt);
+  if (const CurveScheme* curve = find_curve_scheme(opt.scheme); curve && !find_scheme(opt.scheme)) {
+    if (opt.tension && curve->tension == 0.0)
+      throw InvalidInputError("--tension: the curve scheme " + opt.scheme + " has no tension (four-point has)");
+    return run_curve_analysis(opt.tension ? four_point_scheme(*opt.tension) : *curve, opt);
+  }
   const Scheme* scheme = &scheme_named(opt.scheme);
+  Scheme with_tension = *scheme;
+  if (opt.tension) {
+    if (!scheme->takes_tension)
+      throw InvalidInputError("--tension applies to butterfly and the curve scheme four-point, not to " + opt.scheme);
+    with_tension.parameters.tension = *opt.tension;
+    scheme = &with_tension;
+  }
 
   Configuration base;
   if (opt.boundary) base.kind = Configuration::Kind::boundary;
@@ -249,6 +260,7 @@ Command add_analyze_command(CLI::App& app) {
   cmd->add_option("--flatness", opt->flatness,
                   "Flatness parameter s at concave corners (piecewise-smooth; default 1 - (1/4)/lambda_3, 0 = off)")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
   cmd->add_flag("--json", opt->json, "Print JSON (spectra, limit and tangent masks, layout) instead of the table");
   cmd->add_option("--plot-spectrum", opt->plot_spectrum, "Plot eigenvalue magnitudes against k (.svg or .png)")
       ->type_name("FILE");

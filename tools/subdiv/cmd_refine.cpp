@@ -139,7 +139,13 @@ int run_refine(const RefineCommandOptions& opt) {
     throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + names +
                             "; curve schemes: " + curve_scheme_names() + ")");
   }
-  if (opt.tension) throw InvalidInputError("--tension applies to the curve scheme four-point, not to " + opt.scheme);
+  Scheme chosen = *scheme;  // with the --tension given
+  if (opt.tension) {
+    if (!scheme->takes_tension)
+      throw InvalidInputError("--tension applies to butterfly and the curve scheme four-point, not to " + opt.scheme);
+    chosen.parameters.tension = *opt.tension;
+    scheme = &chosen;
+  }
   check_output_path(opt.input, opt.output);
 
   MeshFile file = read_mesh(opt.input);
@@ -226,7 +232,7 @@ Command add_refine_command(CLI::App& app) {
   cmd->add_option("input", opt->input, "Mesh to refine (.obj, .ply or .off)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
   cmd->add_option("-s,--scheme", opt->scheme, "Scheme, surface or curve (see 'subdiv schemes')")->capture_default_str();
-  cmd->add_option("--tension", opt->tension, "four-point curve scheme: the tension w (default 1/16)");
+  cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
   cmd->add_option("-l,--levels", opt->levels, "Refinement steps")->capture_default_str()->check(CLI::Range(0, 12));
   cmd->add_option("--boundary", opt->boundary,
                   "Boundary interpolation, overriding the file's tag (default: the tag, else edge-and-corner)")
