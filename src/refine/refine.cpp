@@ -254,7 +254,7 @@ namespace {
 // The dual and midedge splits have no rules for sharp features, holes or
 // non-manifold elements: refuse them, naming the tag's line.
 void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
-                          const SourceLines* lines) {
+                             const SourceLines* lines) {
   const std::string name(scheme.name);
   auto where = [&](const std::vector<std::uint32_t> SourceLines::*tag_lines, std::size_t i) {
     const std::uint32_t line = lines ? SourceLines::at((*lines).*tag_lines, static_cast<Index>(i)) : 0;
@@ -314,6 +314,14 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
         issue.message += " (allowing non-manifold input, subdiv refine --allow-non-manifold, makes it sharp)";
     require_valid(report, path);
   }
+  if (scheme.split == SplitRule::midedge)
+    for (Index v = 0; v < mesh.vertex_count(); ++v)
+      if (topology.vertex_kind(v) == VertexKind::boundary) {
+        const std::uint32_t line = lines ? SourceLines::at(lines->vertex_lines, v) : 0;
+        std::string where = lines && !lines->path.empty() ? lines->path + (line ? ":" + std::to_string(line) : "") + ": " : "";
+        throw InvalidInputError(where + std::string(scheme.name) + " needs a closed mesh, but vertex " +
+                                std::to_string(v) + " is on a boundary (the midedge split has no boundary rules)");
+      }
   if (scheme.needs_triangles)
     for (Index f = 0; f < mesh.face_count(); ++f)
       if (mesh.face_size(f) != 3) {

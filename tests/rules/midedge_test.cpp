@@ -92,7 +92,7 @@ TEST(Midedge, StencilRowsSumToOne) {
 }
 
 TEST(Midedge, RefusesBoundariesAndTags) {
-  EXPECT_THROW(refine(test::quad_grid(2, 2), midedge_scheme(), levels(1)), TopologyError);
+  EXPECT_THROW(refine(test::quad_grid(2, 2), midedge_scheme(), levels(1)), InvalidInputError);
   PolygonMesh cube = test::cube();
   cube.tags.corners.push_back({0, kInfiniteSharpness, CornerType::unspecified, std::nullopt});
   EXPECT_THROW(refine(cube, midedge_scheme(), levels(1)), InvalidInputError);
