@@ -103,7 +103,9 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
   const int steps = levels * matrix.period;
   RefineOptions options = matrix.rules;
   options.levels = steps;
-  const std::vector<StencilTable> tables = refine_stencils(ring.mesh, scheme, options);
+  Scheme open = scheme;  // the ring mesh's outer boundary lies outside the neighbourhood
+  open.needs_closed_mesh = false;
+  const std::vector<StencilTable> tables = refine_stencils(ring.mesh, open, options);
   const Scheme& placement = layout_placement(scheme.split);
   RefineOptions linear;
   linear.levels = steps;

@@ -77,7 +77,7 @@ namespace {
 RingMesh dual_ring_mesh(const Configuration& configuration, int rings) {
   if (configuration.kind != Configuration::Kind::interior)
     throw InvalidInputError(configuration.name() +
-                            ": the dual split is analysed at extraordinary faces only (interior configurations)");
+                            ": the dual and midedge splits are analysed at extraordinary faces only (interior configurations)");
   if (configuration.k < 3) throw InvalidInputError(configuration.name() + ": an extraordinary face needs k >= 3");
   const RingMesh primal = ring_mesh(SplitRule::quad, configuration, rings + 1);
   const MeshTopology t(primal.mesh);
@@ -115,15 +115,52 @@ void dual_boundary_placement(const LevelView& level, Index edge, Index vertex, M
 
 }  // namespace
 
+const Scheme& layout_placement(SplitRule split);
+
+namespace {
+
+// Two midedge steps make a vertex per corner (the point of the first step's
+// edge joining the corner's two edge points), a dual split's corner point:
+// placed as the dual split places it, at (v + the face's layout point) / 2,
+// which is p / 2 for the layout point p it corresponds to. Other vertices
+// (at the ring mesh's boundary) keep the midpoint placement.
+std::vector<Vec3> midedge_child_layout(const RingMesh& ring, int levels) {
+  if (levels != 2)
+    throw InvalidInputError("child layout: the midedge split is identified after two steps, not " +
+                            std::to_string(levels));
+  RefineOptions once;
+  once.levels = 1;
+  const PolygonMesh first = refine(ring.mesh, layout_placement(SplitRule::midedge), once);
+  PolygonMesh second = refine(first, layout_placement(SplitRule::midedge), once);
+  const MeshTopology t(ring.mesh), t1(first);
+  for (Index c = 0; c < t.corner_count(); ++c) {
+    const Index e = t1.find_edge(t.corner_edge(t.corner_prev(c)), t.corner_edge(c));
+    if (e == kInvalidIndex) throw InvalidInputError("child layout: a corner's edge points share no edge");
+    second.positions[static_cast<std::size_t>(e)] =
+        0.5 * (ring.mesh.positions[static_cast<std::size_t>(t.corner_vertex(c))] +
+               ring.face_centres[static_cast<std::size_t>(t.corner_face(c))]);
+  }
+  return second.positions;
+}
+
+}  // namespace
+
 const Scheme& layout_placement(SplitRule split) {
   static const Scheme dual{"dual-placement", "", "", SplitRule::dual, false, nullptr, nullptr, nullptr, nullptr,
                            dual_placement, dual_boundary_placement};
+  static const Scheme midedge = [] {
+    Scheme s = *find_scheme("midedge");  // edge midpoints
+    s.needs_closed_mesh = false;
+    return s;
+  }();
   if (split == SplitRule::dual) return dual;
+  if (split == SplitRule::midedge) return midedge;
   return *find_scheme(split == SplitRule::quad ? "bilinear" : "linear");
 }
 
 std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels) {
   if (levels < 1) throw InvalidInputError("child layout: levels must be >= 1, not " + std::to_string(levels));
+  if (split == SplitRule::midedge) return midedge_child_layout(ring, levels);
   if (split != SplitRule::dual) {
     RefineOptions down;
     down.levels = levels;
@@ -168,10 +205,7 @@ std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels
 }
 
 RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int rings) {
-  if (split == SplitRule::midedge)
-    throw InvalidInputError("the midedge split repeats its configurations only every two steps, and the analysis has "
-                            "no ring layout for it");
-  if (split == SplitRule::dual) {
+  if (split == SplitRule::dual || split == SplitRule::midedge) {  // at extraordinary faces
     if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
     return dual_ring_mesh(configuration, rings);
   }

@@ -88,9 +88,11 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
   RefineOptions once = rules;
   once.levels = scheme.period;
   once.on_level = nullptr;
-  const StencilTable table = refine_stencil_table(ring.mesh, scheme, once);
+  Scheme open = scheme;  // the ring mesh's outer boundary lies outside the neighbourhood
+  open.needs_closed_mesh = false;
+  const StencilTable table = refine_stencil_table(ring.mesh, open, once);
   const std::vector<Vec3> layout_child = child_layout(scheme.split, ring, scheme.period);
-  const double shrink = std::ldexp(1.0, -scheme.period);
+  const double shrink = std::pow(arity(scheme.split), -scheme.period);
   std::vector<Index> all_child(layout_child.size());
   std::iota(all_child.begin(), all_child.end(), 0);
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <mutex>
 #include <numbers>
+#include <string>
 #include <tuple>
 
 #include "row_accumulator.h"
@@ -80,8 +81,12 @@ void measure_corner_angles(PolygonMesh& mesh, const MeshTopology& t) {
 
 std::shared_ptr<const FlatnessSpectrum> flatness_spectrum(const Scheme& scheme, int k, double alpha) {
   static std::mutex mutex;
-  static std::map<std::tuple<const Scheme*, int, double>, std::shared_ptr<const FlatnessSpectrum>> cache;
-  const auto key = std::tuple{&scheme, k, alpha};
+  // Keyed by what the rules are, not by the Scheme's address: schemes are
+  // values, and copies (with other parameters, or made by the analysis) come
+  // and go.
+  using Key = std::tuple<std::string, double, int, double>;
+  static std::map<Key, std::shared_ptr<const FlatnessSpectrum>> cache;
+  const Key key{std::string(scheme.name), scheme.parameters.tension, k, alpha};
   {
     const std::lock_guard lock(mutex);
     if (auto it = cache.find(key); it != cache.end()) return it->second;

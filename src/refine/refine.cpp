@@ -314,13 +314,13 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
         issue.message += " (allowing non-manifold input, subdiv refine --allow-non-manifold, makes it sharp)";
     require_valid(report, path);
   }
-  if (scheme.split == SplitRule::midedge)
+  if (scheme.needs_closed_mesh)
     for (Index v = 0; v < mesh.vertex_count(); ++v)
       if (topology.vertex_kind(v) == VertexKind::boundary) {
         const std::uint32_t line = lines ? SourceLines::at(lines->vertex_lines, v) : 0;
         std::string where = lines && !lines->path.empty() ? lines->path + (line ? ":" + std::to_string(line) : "") + ": " : "";
         throw InvalidInputError(where + std::string(scheme.name) + " needs a closed mesh, but vertex " +
-                                std::to_string(v) + " is on a boundary (the midedge split has no boundary rules)");
+                                std::to_string(v) + " is on a boundary (it has no boundary rules)");
       }
   if (scheme.needs_triangles)
     for (Index f = 0; f < mesh.face_count(); ++f)

@@ -4,12 +4,15 @@
 //   V-faces: one per vertex, the points of its edges in ring order.
 // Every child vertex is then shared by four faces (two of each kind), and the
 // parent's edges are gone: two steps make a child vertex per parent corner,
-// the dual split's topology (Zorin's survey, section 4.2). Closed manifold
-// meshes only: at a boundary there is no natural way to make the faces
-// (the survey, ibid.), and the boundary polygon would shrink to a point.
+// the dual split's topology (Zorin's survey, section 4.2). Manifold meshes
+// only. A boundary vertex with k >= 2 faces gets the (k + 1)-gon of its
+// edges' points; there is no natural boundary rule (the survey, ibid.): with
+// midpoints the boundary polygon shrinks to a point, so the midedge scheme
+// refuses open meshes (Scheme::needs_closed_mesh) and only the analysis,
+// whose ring mesh has an outer boundary far from what it reads, splits them.
 //
 // Child vertices are numbered as the parent's edges; child faces [F-faces |
-// V-faces in vertex order]. Every face keeps the parent's orientation.
+// V-faces in vertex order, of the vertices that have one]. Every face keeps the parent's orientation.
 
 #include "split_detail.h"
 #include "subdiv/core/error.h"
@@ -18,9 +21,9 @@ namespace subdiv::detail {
 
 SplitMap midedge_split(const MeshTopology& topo, PolygonMesh& child) {
   for (Index v = 0; v < topo.vertex_count(); ++v)
-    if (topo.vertex_face_count(v) > 0 && (topo.vertex_kind(v) != VertexKind::interior || !topo.ring_ordered(v)))
-      throw TopologyError("the midedge split needs a closed manifold mesh, but vertex " + std::to_string(v) + " is " +
-                          (topo.vertex_kind(v) == VertexKind::boundary ? "on a boundary" : "non-manifold"));
+    if (topo.vertex_face_count(v) > 0 && (topo.vertex_kind(v) == VertexKind::non_manifold || !topo.ring_ordered(v)))
+      throw TopologyError("the midedge split needs a manifold mesh, but vertex " + std::to_string(v) +
+                          " is non-manifold");
   SplitMap map;
   map.rule = SplitRule::midedge;
   map.edge_points = 0;
@@ -39,7 +42,9 @@ SplitMap midedge_split(const MeshTopology& topo, PolygonMesh& child) {
   }
   for (Index v = 0; v < topo.vertex_count(); ++v) {
     const auto edges = topo.vertex_edges(v);
-    if (edges.size() < 3) continue;  // isolated, or a 2-gon whose F-faces already share its edge
+    // Isolated, a 2-gon whose F-faces already share its edge, or a boundary
+    // vertex with one face (whose two edge points its F-face joins).
+    if (edges.size() < 3) continue;
     child.face_indices.insert(child.face_indices.end(), edges.begin(), edges.end());
     close_face();
   }

@@ -3,6 +3,7 @@
 #include "subdiv/topology/split.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "split_detail.h"
 #include "subdiv/core/error.h"
@@ -14,6 +15,8 @@ std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, 
   if (rule == SplitRule::dual || rule == SplitRule::midedge) return {f, f + 1};
   return {4 * f, 4 * f + 4};
 }
+
+double arity(SplitRule r) { return r == SplitRule::midedge ? std::sqrt(2.0) : 2.0; }
 
 const char* to_string(SplitRule r) {
   switch (r) {

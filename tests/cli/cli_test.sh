@@ -128,7 +128,9 @@ run adaptive-doo-sabin 1 adaptive "$meshes/cube.obj" -s doo-sabin --eps 0.1 -o "
 run refine-midedge 0 refine "$meshes/cube.obj" -s midedge -l 2 -o "$work/me.obj" --stats
 stdout_has refine-midedge "level 1: 12 vertices, 14 faces" && stdout_has refine-midedge "level 2: 24 vertices, 26 faces"
 run refine-midedge-open 1 refine "$meshes/l_shape.obj" -s midedge -o "$work/x.obj" && stderr_one_line refine-midedge-open
-run analyze-midedge 1 analyze -s midedge -k 4 && stderr_one_line analyze-midedge && stderr_has analyze-midedge "every two steps"
+run analyze-midedge 0 analyze -s midedge -k 3..6 && stdout_has analyze-midedge "period 2" &&
+  stdout_has analyze-midedge "extraordinary face of k sides"
+grep -qE "^interior k=6 +24 +1 +0.750000 +0.750000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze midedge: k=6 row"
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold

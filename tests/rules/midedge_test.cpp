@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <random>
+
+#include "subdiv/analysis/analyze.h"
 
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
@@ -89,6 +93,41 @@ TEST(Midedge, StencilRowsSumToOne) {
       for (const auto& [v, w] : test::merged_row(table, r)) sum += w;
       EXPECT_NEAR(sum, 1.0, 1e-15);
     }
+}
+
+// Two steps at an extraordinary face of k sides: the face's own block is
+// the circulant of 1/2, 1/4, 1/4, whose Fourier transform gives
+// lambda_1 = lambda_2 = (1 + cos(2 pi / k)) / 2 = cos^2(pi / k), above 1/2 for
+// k > 4 (the survey's poor quality at extraordinary faces). Reif's criterion
+// holds for k >= 4; at k = 3 the value 1/4 is triple and it does not apply.
+TEST(Midedge, AnalysisAtExtraordinaryFaces) {
+  for (int k = 3; k <= 10; ++k) {
+    const ConfigurationAnalysis a = analyze(midedge_scheme(), {Configuration::Kind::interior, k, CornerType::convex});
+    ASSERT_TRUE(a.matrix.invariant) << k << ": " << a.matrix.invariance_note;
+    ASSERT_EQ(a.leading.size(), 4u);
+    const double lambda = std::pow(std::cos(std::numbers::pi / k), 2);
+    EXPECT_NEAR(a.leading[0].real(), 1.0, 1e-12) << k;
+    EXPECT_NEAR(a.leading[1].real(), lambda, 1e-12) << k;
+    EXPECT_NEAR(a.leading[2].real(), lambda, 1e-12) << k;
+    if (k == 3) {
+      EXPECT_NEAR(std::abs(a.leading[3]), 0.25, 1e-12);
+      EXPECT_EQ(a.verdict, SmoothnessVerdict::inconclusive);
+    } else {
+      EXPECT_EQ(a.verdict, SmoothnessVerdict::c1) << k << ": " << a.reason;
+    }
+  }
+}
+
+// The split itself makes faces at boundaries too (the analysis' ring meshes
+// need it); the scheme refuses open meshes.
+TEST(Midedge, SplitOfAnOpenMeshIsValid) {
+  const PolygonMesh grid = test::quad_grid(3, 3);
+  PolygonMesh child;
+  split_topology(grid, MeshTopology(grid), SplitRule::midedge, child);
+  const MeshTopology ct(child);
+  EXPECT_TRUE(validate(child, ct).ok());
+  EXPECT_EQ(child.vertex_count(), MeshTopology(grid).edge_count());
+  EXPECT_EQ(ct.boundary_loops().size(), 1u);
 }
 
 TEST(Midedge, RefusesBoundariesAndTags) {

@@ -158,6 +158,10 @@ struct Scheme {
   /// such as sqrt3 and 4-8 whose layout turns on every step). The analysis
   /// reads the matrix of `period` composed steps.
   int period = 1;
+  /// Refuses meshes with a boundary (a scheme without boundary rules whose
+  /// boundary would degenerate). The analysis lifts it: its ring mesh's outer
+  /// boundary lies outside the neighbourhood it reads.
+  bool needs_closed_mesh = false;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.

@@ -32,6 +32,9 @@ enum class SplitRule { quad, triangle, dual, midedge };
 /// depth and adaptive refinement are written for them.
 constexpr bool is_primal(SplitRule r) { return r == SplitRule::quad || r == SplitRule::triangle; }
 
+/// How much one step shrinks the faces' size: 2, or sqrt 2 for the midedge split.
+double arity(SplitRule r);
+
 const char* to_string(SplitRule);
 
 /// Where a level's child vertices come from. Child vertex numbers are
