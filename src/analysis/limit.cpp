@@ -12,6 +12,7 @@
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/dual_limit.h"
+#include "subdiv/analysis/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/creasing.h"
@@ -23,6 +24,38 @@ namespace subdiv {
 
 namespace {
 
+// The canonical neighbourhood the masks are over: the configuration's ring
+// mesh, built as the local subdivision matrix built it, with the matrix's
+// columns located in it by their layout points.
+struct Neighbourhood {
+  int rings = 1;
+  MeshTopology topology;
+  /// Matrix column a -> ring-mesh vertex.
+  std::vector<Index> column_vertex;
+  /// Per ring-mesh vertex: its face ring, -1 outside the neighbourhood.
+  std::vector<int> ring_of;
+  /// Per ring-mesh face: within `rings` face rings (it has a vertex of ring
+  /// < rings: an inner vertex).
+  std::vector<char> face_inside;
+  /// Per ring-mesh vertex: its vertex rule, for the mesh's inner vertices to
+  /// match.
+  std::vector<VertexRule> rule;
+  /// The centre's corner in the first face of sector 0 (outgoing edge along
+  /// the first ray).
+  Index start = kInvalidIndex;
+  /// The matrix: row a is column a's child one level down.
+  Eigen::MatrixXd S;
+  /// Per column: the ring-mesh element whose child is column a's image one
+  /// level down (at half its layout point): a vertex {u, -1}, an edge
+  /// {x, y}, or (quad split) a face {-2 - f, -1}.
+  std::vector<std::array<Index, 2>> parent;
+
+  bool inner(Index u) const {
+    const int r = ring_of[static_cast<std::size_t>(u)];
+    return r >= 0 && r < rings;
+  }
+};
+
 // The masks of one configuration, from the analysis.
 struct Masks {
   std::optional<Eigen::VectorXd> limit;
@@ -30,7 +63,60 @@ struct Masks {
   /// The tangents span the tangent plane (false at a corner whose pair 1/2
   /// is not subdominant: the surface folds or flips there).
   bool normal = false;
+  /// Where the masks are over; absent when there are no masks.
+  std::optional<Neighbourhood> neighbourhood;
 };
+
+// The neighbourhood of matrix m in its ring mesh (the same construction
+// local_subdivision_matrix uses), the vertex rules under the level's
+// boundary interpolation and creasing method.
+Neighbourhood canonical_neighbourhood(SplitRule split, const LocalSubdivisionMatrix& m, BoundaryInterpolation boundary,
+                                      CreaseMethod method) {
+  const RingMesh ring = ring_mesh(split, m.configuration, ring_mesh_size(m.rings));
+  Neighbourhood n{m.rings, MeshTopology(ring.mesh), {}, {}, {}, {}, kInvalidIndex, {}, {}};
+  const MeshTopology& t = n.topology;
+  const auto& positions = ring.mesh.positions;
+  n.ring_of.assign(positions.size(), -1);
+  for (std::size_t a = 0; a < m.layout.size(); ++a) {
+    Index found = kInvalidIndex;
+    for (std::size_t v = 0; v < positions.size() && found == kInvalidIndex; ++v)
+      if (norm(positions[v] - m.layout[a]) < 1e-9) found = static_cast<Index>(v);
+    if (found == kInvalidIndex)
+      throw InvalidInputError(m.configuration.name() + ": a neighbourhood point is not a ring-mesh vertex");
+    n.column_vertex.push_back(found);
+    n.ring_of[static_cast<std::size_t>(found)] = m.ring_of[a];
+  }
+  n.face_inside.assign(static_cast<std::size_t>(t.face_count()), 0);
+  for (Index f = 0; f < t.face_count(); ++f)
+    for (const Index v : t.face_vertices(f)) n.face_inside[static_cast<std::size_t>(f)] |= n.inner(v) ? 1 : 0;
+  for (const Index c : t.vertex_corners(ring.centre)) {
+    const Vec3 p = positions[static_cast<std::size_t>(t.corner_vertex(t.corner_next(c)))];
+    if (norm(p - Vec3{1.0, 0.0, 0.0}) < 1e-9) n.start = c;
+  }
+  if (n.start == kInvalidIndex) throw InvalidInputError(m.configuration.name() + ": no face along the first ray");
+  n.rule = compute_creasing(ring.mesh, t, boundary, method).vertex_rule;
+  n.S = m.S;
+  auto at = [](Vec3 a, Vec3 b) { return norm(a - b) < 1e-9; };
+  for (const Vec3& p : m.layout) {
+    const Vec3 half = 0.5 * p;
+    std::array<Index, 2> parent{kInvalidIndex, kInvalidIndex};
+    for (Index v = 0; v < t.vertex_count() && parent[0] == kInvalidIndex; ++v)
+      if (at(positions[static_cast<std::size_t>(v)], half)) parent = {v, kInvalidIndex};
+    for (Index e = 0; e < t.edge_count() && parent[0] == kInvalidIndex; ++e) {
+      const auto [x, y] = t.edge_vertices(e);
+      if (at(0.5 * (positions[static_cast<std::size_t>(x)] + positions[static_cast<std::size_t>(y)]), half)) parent = {x, y};
+    }
+    for (Index f = 0; f < t.face_count() && parent[0] == kInvalidIndex && split == SplitRule::quad; ++f) {
+      Vec3 centroid;
+      for (const Index v : t.face_vertices(f)) centroid += positions[static_cast<std::size_t>(v)];
+      if (at((1.0 / t.face_size(f)) * centroid, half)) parent = {-2 - f, kInvalidIndex};
+    }
+    if (parent[0] == kInvalidIndex)
+      throw InvalidInputError(m.configuration.name() + ": no ring-mesh element under a neighbourhood point's image");
+    n.parent.push_back(parent);
+  }
+  return n;
+}
 
 // At a corner the two boundary curves give the eigenvalue 1/2 twice, their
 // tangents the left eigenvectors. The basis along the curves: the first
@@ -51,11 +137,28 @@ std::optional<std::array<Eigen::VectorXd, 2>> corner_tangent_masks(const Eigen::
   return std::array<Eigen::VectorXd, 2>{K * inverse.col(0), K * inverse.col(1)};
 }
 
+// The limit mask with the weights that vanish to rounding made zero, where
+// that makes it an exact left eigenvector (l S == l in floating point), as
+// e_0 is for an interpolating scheme, whose centre row of S is e_0: the
+// eigensolver's vector is e_0 only to rounding (about 1e-16), and the limit
+// position is then the vertex itself, exactly. Elsewhere the mask as
+// computed.
+Eigen::VectorXd exact_zeros(const Eigen::VectorXd& mask, const Eigen::MatrixXd& S) {
+  const double largest = mask.cwiseAbs().maxCoeff();
+  Eigen::VectorXd snapped = mask;
+  for (Eigen::Index a = 0; a < snapped.size(); ++a)
+    if (std::fabs(snapped[a]) <= 1e-12 * largest) snapped[a] = 0.0;
+  snapped /= snapped.sum();
+  const Eigen::RowVectorXd image = snapped.transpose() * S;
+  return image == snapped.transpose() ? snapped : mask;
+}
+
 bool same(double a, double b) { return std::fabs(a - b) <= 1e-9; }
 
 class MaskCache {
  public:
-  MaskCache(const Scheme& scheme, const RefineOptions& rules) : scheme_(scheme), rules_(rules) {}
+  MaskCache(const Scheme& scheme, const RefineOptions& rules, BoundaryInterpolation boundary, CreaseMethod method)
+      : scheme_(scheme), rules_(rules), boundary_(boundary), method_(method) {}
 
   /// Corners: keyed by type and angle under the piecewise-smooth rules
   /// (their edge points and the flatness modification depend on them); the
@@ -75,9 +178,10 @@ class MaskCache {
     options.characteristic_map = false;
     options.rules = rules_;
     const ConfigurationAnalysis a = analyze(scheme_, canonical, options);
-    if (a.matrix.invariant && a.matrix.rings != 1)
-      throw InvalidInputError(std::string(scheme_.name) + ": limit masks over more than the one-ring are not supported yet");
-    Masks masks{a.limit_mask, a.tangent_masks, a.tangent_masks.has_value()};
+    Masks masks{a.limit_mask, a.tangent_masks, a.tangent_masks.has_value(), std::nullopt};
+    if (masks.limit) masks.limit = exact_zeros(*masks.limit, a.matrix.S);
+    if (a.matrix.invariant && a.limit_mask)
+      masks.neighbourhood = canonical_neighbourhood(scheme_.split, a.matrix, boundary_, method_);
     if (canonical.kind == Configuration::Kind::corner && a.matrix.invariant) {
       // The pair 1/2 spans the tangent plane when it is subdominant:
       // lambda_1 = lambda_2 = 1/2 > |lambda_3|.
@@ -92,28 +196,10 @@ class MaskCache {
  private:
   const Scheme& scheme_;
   RefineOptions rules_;
+  BoundaryInterpolation boundary_;
+  CreaseMethod method_;
   std::map<std::tuple<int, int, int, double>, Masks> cache_;
 };
-
-// The centre and the one-ring of the sector of v whose faces are
-// vertex_corners(v)[first .. first + count) (cyclically), in the order of
-// the configuration's layout: counter-clockwise from the first face's
-// outgoing edge; for quads the edge neighbour and then the face's opposite
-// vertex of each face; in a sector bounded by sharp edges (boundary, crease,
-// corner), the last face's incoming neighbour closes the list.
-std::vector<Index> canonical_ring(const MeshTopology& t, Index v, bool quads, bool bounded, std::size_t first,
-                                  std::size_t count) {
-  std::vector<Index> ring{v};
-  const auto corners = t.vertex_corners(v);
-  for (std::size_t j = 0; j < count; ++j) {
-    const Index c = corners[(first + j) % corners.size()];
-    const Index next = t.corner_next(c);
-    ring.push_back(t.corner_vertex(next));
-    if (quads) ring.push_back(t.corner_vertex(t.corner_next(next)));
-    if (bounded && j + 1 == count) ring.push_back(t.corner_vertex(t.corner_prev(c)));
-  }
-  return ring;
-}
 
 Vec3 apply(const Eigen::VectorXd& mask, const std::vector<Index>& ring, const std::vector<Vec3>& p) {
   Vec3 sum;
@@ -138,7 +224,28 @@ struct GenericLevel {
   const std::vector<char>& semi_sharp_vertex;
   const std::vector<double>& sector_angle;  ///< piecewise-smooth rules; else empty
   bool quads;
+  /// One step of the scheme from this level, as stencils (computed on first
+  /// use): the match compares its rows with the matrix's.
+  struct Step {
+    const PolygonMesh& mesh;
+    const Scheme& scheme;
+    RefineOptions once;
+    std::optional<StencilTable> table;
+    const StencilTable& rows() {
+      if (!table) table = refine_stencil_table(mesh, scheme, once);
+      return *table;
+    }
+  };
+  Step& step;
 };
+
+// Child vertex numbering of the primal splits: [face points | edge points |
+// vertex points] (quad), [edge points | vertex points] (triangle).
+Index face_child(const MeshTopology&, Index f) { return f; }
+Index edge_child(const MeshTopology& t, Index e, bool quads) { return (quads ? t.face_count() : 0) + e; }
+Index vertex_child(const MeshTopology& t, Index v, bool quads) {
+  return (quads ? t.face_count() : 0) + t.edge_count() + v;
+}
 
 // A sector of v: faces vertex_corners(v)[first .. first + count), bounded by
 // sharp edges, or all of them around a smooth vertex.
@@ -164,6 +271,122 @@ std::vector<Sector> sharp_sectors(const GenericLevel& g, Index v) {
     }
   }
   return sectors;
+}
+
+// The mesh vertices of the canonical neighbourhood n around v, in the order
+// of the matrix's columns: the ring mesh is walked face by face from the
+// centre's first face outwards in lockstep with the mesh from v's face at
+// `first` (vertex_corners(v)[first], the face whose outgoing edge at v
+// plays the first ray), crossing each edge to the face beyond it while that
+// face is within the neighbourhood. nullopt where the mesh differs from the
+// canonical topology there: another face size, an edge that is a boundary
+// (or sharp) in one and not in the other, two canonical vertices on one
+// mesh vertex, or an inner vertex (ring < rings: every face around it is in
+// the neighbourhood, and the rules of the neighbourhood's image one level
+// down read no further) with another valence, vertex rule, a semi-sharp
+// tag, or a rule that changes one level down. Edges at inner vertices must
+// be smooth or, where the canonical mesh has a boundary, infinitely sharp;
+// edges between outer vertices are not read by those rules and may be
+// anything. With one ring this is the one-ring match: the faces at v and
+// the edges at v.
+std::optional<std::vector<Index>> match_neighbourhood(const GenericLevel& g, const Neighbourhood& n, Index v,
+                                                      std::size_t first) {
+  const MeshTopology& T = n.topology;
+  const MeshTopology& t = g.t;
+  const auto corners = t.vertex_corners(v);
+  std::vector<Index> image(static_cast<std::size_t>(T.vertex_count()), kInvalidIndex);
+  std::vector<Index> face_image(static_cast<std::size_t>(T.face_count()), kInvalidIndex);
+  std::vector<std::pair<Index, Index>> queue{{n.start, corners[first % corners.size()]}};
+  face_image[static_cast<std::size_t>(T.corner_face(n.start))] = t.corner_face(queue.front().second);
+  for (std::size_t q = 0; q < queue.size(); ++q) {
+    auto [cc, mc] = queue[q];
+    const Index size = T.face_size(T.corner_face(cc));
+    if (t.face_size(t.corner_face(mc)) != size) return std::nullopt;
+    for (Index i = 0; i < size; ++i, cc = T.corner_next(cc), mc = t.corner_next(mc)) {
+      Index& w = image[static_cast<std::size_t>(T.corner_vertex(cc))];
+      if (w == kInvalidIndex) w = t.corner_vertex(mc);
+      else if (w != t.corner_vertex(mc)) return std::nullopt;
+      const Index ce = T.corner_edge(cc), me = t.corner_edge(mc);
+      const double s = edge_sharpness_of(g.creasing, me);
+      const auto sides = T.edge_corners(ce);
+      if (sides.size() == 1) {  // the configuration's boundary
+        if (s < kInfiniteSharpness) return std::nullopt;
+        continue;
+      }
+      const auto [a, b] = T.edge_vertices(ce);
+      if ((n.inner(a) || n.inner(b)) && s != 0.0) return std::nullopt;
+      const Index across = sides[0] == cc ? sides[1] : sides[0];
+      const Index face = T.corner_face(across);
+      if (!n.face_inside[static_cast<std::size_t>(face)]) continue;
+      const auto mesh_sides = t.edge_corners(me);
+      if (mesh_sides.size() != 2) return std::nullopt;
+      const Index mesh_across = mesh_sides[0] == mc ? mesh_sides[1] : mesh_sides[0];
+      if (t.corner_vertex(mesh_across) != t.corner_vertex(t.corner_next(mc))) return std::nullopt;  // flipped
+      Index& mapped = face_image[static_cast<std::size_t>(face)];
+      if (mapped == kInvalidIndex) {
+        mapped = t.corner_face(mesh_across);
+        queue.emplace_back(across, mesh_across);
+      } else if (mapped != t.corner_face(mesh_across)) {
+        return std::nullopt;
+      }
+    }
+  }
+  std::vector<Index> ring;
+  ring.reserve(n.column_vertex.size());
+  for (const Index u : n.column_vertex) {
+    const Index w = image[static_cast<std::size_t>(u)];
+    if (w == kInvalidIndex) return std::nullopt;
+    ring.push_back(w);
+    if (!n.inner(u)) continue;
+    const auto wi = static_cast<std::size_t>(w);
+    const VertexRule rule = g.creasing.vertex_rule[wi];
+    if (!t.ring_ordered(w) || g.semi_sharp_vertex[wi] || rule != n.rule[static_cast<std::size_t>(u)] ||
+        rule != g.creasing.child_vertex_rule[wi])
+      return std::nullopt;
+    if (T.vertex_kind(u) == VertexKind::interior && t.vertex_face_count(w) != T.vertex_face_count(u))
+      return std::nullopt;
+  }
+  std::vector<std::pair<Index, Index>> column_of;  // (mesh vertex, column), sorted
+  for (std::size_t a = 0; a < ring.size(); ++a) column_of.emplace_back(ring[a], static_cast<Index>(a));
+  std::sort(column_of.begin(), column_of.end());
+  for (std::size_t a = 1; a < column_of.size(); ++a)
+    if (column_of[a].first == column_of[a - 1].first) return std::nullopt;
+  // The mesh's own first step on the neighbourhood is the matrix: the rules
+  // may read more than the topology above checks (the Butterfly rules of an
+  // edge read the valence of both ends, ring-r vertices included; the
+  // piecewise-smooth rules the sectors of boundary ends). Later steps see
+  // the neighbourhood's image, whose vertices of ring > 0 are new (edge and
+  // face points, regular), in a region the checks above cover.
+  const StencilTable& rows = g.step.rows();
+  Eigen::VectorXd row(static_cast<Eigen::Index>(ring.size()));
+  for (std::size_t a = 0; a < ring.size(); ++a) {
+    const auto [x, y] = n.parent[a];
+    Index child = kInvalidIndex;
+    if (x < 0) {
+      const Index f = face_image[static_cast<std::size_t>(-2 - x)];
+      if (f == kInvalidIndex) return std::nullopt;
+      child = face_child(t, f);
+    } else if (y == kInvalidIndex) {
+      child = vertex_child(t, image[static_cast<std::size_t>(x)], g.quads);
+    } else {
+      const Index e = t.find_edge(image[static_cast<std::size_t>(x)], image[static_cast<std::size_t>(y)]);
+      if (e == kInvalidIndex) return std::nullopt;
+      child = edge_child(t, e, g.quads);
+    }
+    row.setZero();
+    const auto vertices = rows.row_vertices(child);
+    const auto weights = rows.row_weights(child);
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      const auto it = std::lower_bound(column_of.begin(), column_of.end(), std::pair{vertices[i], Index{0}});
+      if (it == column_of.end() || it->first != vertices[i]) {
+        if (weights[i] != 0.0) return std::nullopt;
+        continue;
+      }
+      row[it->second] += weights[i];
+    }
+    if ((row.transpose() - n.S.row(static_cast<Eigen::Index>(a))).cwiseAbs().maxCoeff() > 1e-12) return std::nullopt;
+  }
+  return ring;
 }
 
 // Position, tangents and normal from one configuration's masks on a ring;
@@ -225,9 +448,10 @@ std::optional<GenericLimit> generic_limit(const GenericLevel& g, Index v, MaskCa
     if (c.angle > std::numbers::pi) c.corner = CornerType::concave;
     if (c.corner == CornerType::concave && !(kind == VertexKind::boundary && sharp == 2)) return corner;
     const Masks& m = cache.at(c);
-    const std::vector<Index> ring = canonical_ring(t, v, g.quads, true, sector.first, sector.count);
-    if (!m.limit || !m.tangents || static_cast<std::size_t>(m.limit->size()) != ring.size()) return corner;
-    GenericLimit result = from_masks(g, v, m, ring, sector);
+    if (!m.limit || !m.tangents || !m.neighbourhood) return corner;
+    const auto ring = match_neighbourhood(g, *m.neighbourhood, v, sector.first);
+    if (!ring) return corner;
+    GenericLimit result = from_masks(g, v, m, *ring, sector);
     result.position = p;
     return result;
   }
@@ -245,21 +469,29 @@ std::optional<GenericLimit> generic_limit(const GenericLevel& g, Index v, MaskCa
     for (const Sector sector : sharp_sectors(g, v)) {
       if (sector.count < 2) continue;
       const Masks& m = cache.at({Configuration::Kind::boundary, static_cast<int>(sector.count)});
-      const std::vector<Index> ring = canonical_ring(t, v, g.quads, true, sector.first, sector.count);
-      if (!m.limit || static_cast<std::size_t>(m.limit->size()) != ring.size()) return std::nullopt;
-      // The position reads the curve only (centre, first and last ring vertex).
+      if (!m.limit || !m.neighbourhood) return std::nullopt;
+      // The position reads the curve only (the canonical boundary: the
+      // centre and the rays' vertices).
       const Eigen::VectorXd& mask = *m.limit;
-      if (mask.segment(2, mask.size() - 3).cwiseAbs().sum() > 1e-12) return std::nullopt;
-      return from_masks(g, v, m, ring, sector);
+      const Neighbourhood& n = *m.neighbourhood;
+      double off_curve = 0.0;
+      for (Eigen::Index a = 0; a < mask.size(); ++a)
+        if (n.topology.vertex_kind(n.column_vertex[static_cast<std::size_t>(a)]) != VertexKind::boundary)
+          off_curve += std::fabs(mask[a]);
+      if (off_curve > 1e-12) return std::nullopt;
+      const auto ring = match_neighbourhood(g, n, v, sector.first);
+      if (!ring) return std::nullopt;
+      return from_masks(g, v, m, *ring, sector);
     }
     return std::nullopt;
   }
   const int k = smooth_interior ? t.valence(v) : t.vertex_face_count(v);
   const Masks& m = cache.at({smooth_interior ? Configuration::Kind::interior : Configuration::Kind::boundary, k});
   const Sector all{0, t.vertex_corners(v).size()};
-  const std::vector<Index> ring = canonical_ring(t, v, g.quads, smooth_boundary, all.first, all.count);
-  if (!m.limit || static_cast<std::size_t>(m.limit->size()) != ring.size()) return std::nullopt;
-  return from_masks(g, v, m, ring, all);
+  if (!m.limit || !m.neighbourhood) return std::nullopt;
+  const auto ring = match_neighbourhood(g, *m.neighbourhood, v, all.first);
+  if (!ring) return std::nullopt;
+  return from_masks(g, v, m, *ring, all);
 }
 
 // Refinement steps after which the closed forms apply everywhere they can:
@@ -326,8 +558,11 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   const bool quads = scheme.split == SplitRule::quad;
   const std::vector<double> sector_angle =
       piecewise ? detail::sector_angles(current, t, creasing) : std::vector<double>{};
-  const GenericLevel generic{t, creasing, current.positions, semi_sharp_vertex, sector_angle, quads};
-  MaskCache cache(scheme, options.refine);
+  RefineOptions step_options = one;
+  step_options.on_level = nullptr;
+  GenericLevel::Step step{current, scheme, step_options, std::nullopt};
+  const GenericLevel generic{t, creasing, current.positions, semi_sharp_vertex, sector_angle, quads, step};
+  MaskCache cache(scheme, options.refine, boundary, method);
   LimitMasks scratch;
 
   LimitResult result;

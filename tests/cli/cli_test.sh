@@ -297,6 +297,17 @@ awk '/^v /{ok = ($2 - 0.25)^2 + ($3 - 0.25)^2 + ($4 - 0.25)^2 < 1e-24; exit} END
 cmp -s "$meshes/cube.obj" "$work/cube_in.obj" && pass || fail "limit modified its input"
 run limit-loop-quads 1 limit "$meshes/cube.obj" -s loop -o "$work/loop_limit.obj" && stderr_one_line limit-loop-quads
 run limit-loop 0 limit "$meshes/cube.obj" -s loop --triangulate -o "$work/loop_limit.obj"
+# The Butterfly schemes' masks reach past the one-ring; they interpolate, so
+# the limit positions are the input's (to the file's digits) and every
+# vertex gets a unit normal.
+run limit-modified-butterfly 0 limit "$meshes/cube.obj" -s modified-butterfly --triangulate --normals \
+  -o "$work/mb_limit.obj" && stdout_has limit-modified-butterfly "8 vertices at their modified-butterfly limit positions"
+[ "$(grep -c '^vn ' "$work/mb_limit.obj")" -eq 8 ] && pass || fail "limit modified-butterfly: expected 8 vn lines"
+paste <(grep '^v ' "$work/mb_limit.obj") <(grep '^v ' "$meshes/cube.obj") <(grep '^vn ' "$work/mb_limit.obj") |
+  awk '{if (($2-$6)^2 + ($3-$7)^2 + ($4-$8)^2 != 0) bad = 1; l = $10*$10 + $11*$11 + $12*$12; if ((l - 1)^2 > 1e-20) bad = 1}
+       END{exit bad}' && pass || fail "limit modified-butterfly: moved a vertex or wrote a non-unit normal"
+[ -s "$work/err" ] && fail "limit modified-butterfly: warned: $(cat "$work/err")" || pass
+run limit-butterfly 0 limit "$meshes/cube.obj" -s butterfly --triangulate -o "$work/b_limit.obj"
 run limit-same-file 1 limit "$work/cube_in.obj" -o "$work/cube_in.obj" && stderr_one_line limit-same-file
 # The generic masks give the same cube corner.
 run limit-generic 0 limit "$meshes/cube.obj" --masks generic -o "$work/cube_generic.obj" &&

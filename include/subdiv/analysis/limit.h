@@ -14,11 +14,16 @@
 // - Generic masks, for every scheme: the left eigenvectors of the local
 //   subdivision matrix (eigenvalue 1: the limit position; the subdominant
 //   pair: two tangents), computed once per configuration by the analysis
-//   and cached, after `isolation_levels` refinement steps. A vertex's
-//   neighbourhood is matched to its configuration's canonical ring (centre,
-//   then the ring counter-clockwise from the first edge), so it must look
-//   like that ring: faces of the split's kind around a smooth interior
-//   vertex, a boundary vertex, or a corner. A vertex on an interior crease
+//   and cached, after `isolation_levels` refinement steps. The masks are
+//   over the smallest invariant neighbourhood, r face rings (one for
+//   Catmull-Clark and Loop, two at the Butterfly schemes' regular
+//   vertices). A vertex's neighbourhood is matched to its configuration's
+//   ring mesh face by face from the first face (counter-clockwise from the
+//   first edge), so within r rings it must look like it: faces of the
+//   split's kind around a smooth interior vertex, a boundary vertex, or a
+//   corner, the inner vertices' valences and rules the configuration's, and
+//   the mesh's own first step there equal to the matrix (so another
+//   extraordinary vertex whose rules reach the neighbourhood fails it). A vertex on an interior crease
 //   takes the masks of one of its sectors (the first with two or more
 //   faces) as a boundary configuration with that sector's faces: each
 //   sector evolves as a boundary fan, the crease and boundary rules being
@@ -32,8 +37,9 @@
 //   concave ones with the flatness modification), else zero (the standard
 //   rules' and the unflattened concave corners, which flip or fold).
 //   Vertices that match no
-//   canonical ring (darts, non-manifold vertices, semi-sharp features not yet
-//   resolved) keep their refined position and are counted.
+//   canonical neighbourhood (darts, non-manifold vertices, semi-sharp
+//   features not yet resolved, an extraordinary vertex not yet isolated)
+//   keep their refined position and are counted.
 
 #include <cstdint>
 #include <vector>
@@ -81,8 +87,7 @@ struct LimitResult {
 
 /// Limit positions (and normals) of every vertex of `mesh` under `scheme`.
 /// Throws as refine() does for meshes it cannot refine, and
-/// InvalidInputError for a scheme whose generic masks need more than the
-/// one-ring.
+/// InvalidInputError for the dual and midedge splits.
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options = {});
 
 }  // namespace subdiv
