@@ -170,7 +170,8 @@ std::vector<FlatnessSite> flatness_sites(const Scheme& scheme, const MeshTopolog
     site.child_ring.push_back(map.edge_point(t.corner_edge(t.corner_prev(corners.back()))));
     if (static_cast<Eigen::Index>(site.child_ring.size()) != n)
       throw InvalidInputError(std::string(scheme.name) + ": concave corner at vertex " + std::to_string(v) +
-                              ": its one-ring does not match the corner configuration");
+                              ": its one-ring (" + std::to_string(site.child_ring.size()) +
+                              " vertices) does not match the corner configuration's (" + std::to_string(n) + ")");
     site.modification = std::move(modification);
     sites.push_back(std::move(site));
   }

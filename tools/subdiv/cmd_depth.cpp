@@ -75,7 +75,7 @@ int run_depth(const DepthCommandOptions& opt) {
   print_trade_off(bound, opt.eps);
 
   if (opt.verify) {
-    const LevelCost& size = level_costs(file.mesh, scheme, depth).back();
+    const LevelCost size = level_costs(file.mesh, scheme, depth).back();
     if (size.faces > kMaxVerifyFaces || size.corners > std::numeric_limits<std::int32_t>::max() ||
         size.vertices > std::numeric_limits<std::int32_t>::max())
       throw InvalidInputError("--verify: depth " + std::to_string(depth) + " has " + std::to_string(size.faces) +
