@@ -15,7 +15,7 @@
 // points (2 per boundary edge, SplitMap::boundary_edges order, the point near
 // edge_vertices(e)[0] first)]. Child faces: [F-faces | E-faces of the edges,
 // in edge order | V-faces of the vertices that have faces, in vertex order].
-// Every face keeps the parent's orientation (checked in split_test.cpp).
+// Every face keeps the parent's orientation (checked in tests/rules/doo_sabin_test.cpp).
 
 #include <algorithm>
 
