@@ -3,6 +3,7 @@
 // curve scheme, refinement of the file's polylines (OBJ `l` lines).
 
 #include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -211,14 +212,17 @@ int run_refine(const RefineCommandOptions& opt) {
 }
 
 int run_schemes() {
+  int width = 0;  // the longest name, so that the descriptions line up
+  for (const Scheme* s : all_schemes()) width = std::max(width, static_cast<int>(s->name.size()));
+  for (const CurveScheme* s : all_curve_schemes()) width = std::max(width, static_cast<int>(s->name.size()));
   for (const Scheme* s : all_schemes()) {
-    std::printf("%-15s %s\n", std::string(s->name).c_str(), std::string(s->summary).c_str());
-    std::printf("%-15s   %s; %s\n", "", to_string(s->split), std::string(s->citation).c_str());
+    std::printf("%-*s %s\n", width, std::string(s->name).c_str(), std::string(s->summary).c_str());
+    std::printf("%-*s   %s; %s\n", width, "", to_string(s->split), std::string(s->citation).c_str());
   }
   // Curve schemes refine polylines (OBJ `l` lines), not faces.
   for (const CurveScheme* s : all_curve_schemes()) {
-    std::printf("%-15s %s\n", std::string(s->name).c_str(), std::string(s->summary).c_str());
-    std::printf("%-15s   curve scheme (polylines, %s); %s\n", "", s->dual ? "dual" : "primal",
+    std::printf("%-*s %s\n", width, std::string(s->name).c_str(), std::string(s->summary).c_str());
+    std::printf("%-*s   curve scheme (polylines, %s); %s\n", width, "", s->dual ? "dual" : "primal",
                 std::string(s->citation).c_str());
   }
   return kExitOk;
