@@ -11,6 +11,7 @@
 #include <string>
 
 #include "subdiv/core/error.h"
+#include "support/bsplines.h"
 #include "support/stencil_rows.h"
 
 namespace subdiv {
@@ -42,19 +43,8 @@ Vec3 apply_wrapped(const CurveMask& mask, const std::vector<Vec3>& p, Index anch
   return sum;
 }
 
-/// Centred uniform B-splines: cubic on [-2, 2], quadratic on [-3/2, 3/2].
-double cubic_basis(double x) {
-  x = std::abs(x);
-  if (x < 1.0) return 2.0 / 3.0 - x * x + 0.5 * x * x * x;
-  if (x < 2.0) return (2.0 - x) * (2.0 - x) * (2.0 - x) / 6.0;
-  return 0.0;
-}
-double quadratic_basis(double x) {
-  x = std::abs(x);
-  if (x < 0.5) return 0.75 - x * x;
-  if (x < 1.5) return 0.5 * (1.5 - x) * (1.5 - x);
-  return 0.0;
-}
+using test::cubic_bspline;
+using test::quadratic_bspline;
 
 /// sum_j p_j basis(t - j - shift), the control point j at parameter j + shift;
 /// closed: j taken modulo the point count.
@@ -292,7 +282,7 @@ TEST(CurveCubicBSpline, ClosedLimitIsTheUniformCubicBSpline) {
     const Polyline fine = refine(coarse, s, levels);
     const double h = 1.0 / (1 << levels);
     for (Index k = 0; k < static_cast<Index>(fine.points.size()); ++k) {
-      const Vec3 exact = spline(coarse.points, true, k * h, cubic_basis);
+      const Vec3 exact = spline(coarse.points, true, k * h, cubic_bspline);
       raw_error[levels] = std::max(raw_error[levels], distance(fine.points[static_cast<std::size_t>(k)], exact));
       if (levels == 4) limit_error = std::max(limit_error, distance(apply_wrapped(s.limit, fine.points, k), exact));
     }
@@ -321,7 +311,7 @@ TEST(CurveCubicBSpline, OpenLimitHasNaturalInterpolatedEnds) {
   EXPECT_EQ(fine.points.back(), coarse.points.back());
   double error = 0.0;
   for (std::size_t k = 0; k < fine.points.size(); ++k) {
-    const Vec3 exact = spline(extended, false, static_cast<double>(k) / 16.0, cubic_basis, -1.0);
+    const Vec3 exact = spline(extended, false, static_cast<double>(k) / 16.0, cubic_bspline, -1.0);
     const Vec3 limit = k == 0 || k + 1 == fine.points.size()
                            ? fine.points[k]
                            : (fine.points[k - 1] + 4.0 * fine.points[k] + fine.points[k + 1]) * (1.0 / 6.0);
@@ -350,10 +340,10 @@ TEST(CurveChaikin, ClosedLimitIsTheUniformQuadraticBSpline) {
     for (Index k = 0; k < static_cast<Index>(fine.points.size()); ++k) {
       const double t = chaikin_parameter(k, levels);
       raw_error[levels] = std::max(raw_error[levels], distance(fine.points[static_cast<std::size_t>(k)],
-                                                               spline(coarse.points, true, t, quadratic_basis)));
+                                                               spline(coarse.points, true, t, quadratic_bspline)));
       if (levels == 4)
         limit_error = std::max(limit_error, distance(apply_wrapped(s.limit, fine.points, k),
-                                                     spline(coarse.points, true, t + 0.5 * h, quadratic_basis)));
+                                                     spline(coarse.points, true, t + 0.5 * h, quadratic_bspline)));
     }
   }
   EXPECT_LE(limit_error, 1e-14);
@@ -374,8 +364,8 @@ TEST(CurveRefine, ClosedBSplineSchemesKeepTheirSpline) {
     std::function<double(double)> basis;
     bool quadratic;
   };
-  for (const Case& c : {Case{&cubic_bspline_curve_scheme(), cubic_basis, false},
-                        Case{&chaikin_curve_scheme(), quadratic_basis, true}}) {
+  for (const Case& c : {Case{&cubic_bspline_curve_scheme(), cubic_bspline, false},
+                        Case{&chaikin_curve_scheme(), quadratic_bspline, true}}) {
     const Polyline coarse{random_points(6, 29), true};
     for (int levels = 1; levels <= 5; ++levels) {
       const Polyline fine = refine(coarse, *c.scheme, levels);
@@ -415,7 +405,7 @@ TEST(CurveChaikin, OpenLimitIsQuadraticBSplineWithDoubledEnds) {
     const Vec3 limit =
         0.5 * (fine_doubled[static_cast<std::size_t>(k)] + fine_doubled[static_cast<std::size_t>(k) + 1]);
     error = std::max(error,
-                     distance(limit, spline(doubled, false, chaikin_parameter(k, levels) + 0.5 * h, quadratic_basis)));
+                     distance(limit, spline(doubled, false, chaikin_parameter(k, levels) + 0.5 * h, quadratic_bspline)));
   }
   EXPECT_LE(error, 1e-14);
   RecordProperty("limit_error", sci(error));

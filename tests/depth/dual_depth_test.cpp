@@ -23,18 +23,13 @@
 #include "subdiv/rules/doo_sabin.h"
 #include "subdiv/rules/scheme.h"
 #include "depth/depth_test_meshes.h"
+#include "support/bsplines.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
 namespace {
 
-// The centred quadratic B-spline.
-double quadratic_bspline(double t) {
-  const double a = std::fabs(t);
-  if (a <= 0.5) return 0.75 - a * a;
-  if (a <= 1.5) return 0.5 * (1.5 - a) * (1.5 - a);
-  return 0.0;
-}
+using test::quadratic_bspline;
 
 TEST(DualLimit, RegularTorusIsTheBiquadraticSplineAtEachVertex) {
   // On a regular grid Doo-Sabin is the biquadratic B-spline with the control

@@ -13,6 +13,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/validation.h"
 #include "subdiv/refine/refine.h"
+#include "support/bsplines.h"
 #include "support/stencil_rows.h"
 #include "support/test_meshes.h"
 
@@ -123,20 +124,11 @@ TEST(DooSabin, DualSplitTopology) {
   }
 }
 
-// The centred uniform quadratic B-spline: 3/4 - t^2 on |t| <= 1/2,
-// (3/2 - |t|)^2 / 2 on 1/2 <= |t| <= 3/2.
-double quadratic_bspline(double t) {
-  t = std::fabs(t);
-  if (t <= 0.5) return 0.75 - t * t;
-  if (t <= 1.5) return 0.5 * (1.5 - t) * (1.5 - t);
-  return 0.0;
-}
-
 // The biquadratic spline with control points at the mesh's (x, y) lattice of
 // spacing h and heights z, at (u, v).
 double biquadratic(const PolygonMesh& net, double h, double u, double v) {
   double s = 0.0;
-  for (const Vec3& p : net.positions) s += p.z * quadratic_bspline((u - p.x) / h) * quadratic_bspline((v - p.y) / h);
+  for (const Vec3& p : net.positions) s += p.z * test::quadratic_bspline((u - p.x) / h) * test::quadratic_bspline((v - p.y) / h);
   return s;
 }
 
