@@ -251,30 +251,35 @@ void run_with_threads(int threads, Body&& body) {
 
 namespace {
 
+// The prefix of an error about element i of a file: "path:line: ", "path: "
+// when its line is unknown, nothing without a path. `element_lines` picks the
+// kind of element (SourceLines::face_lines, ...).
+std::string where(const SourceLines* lines, const std::vector<std::uint32_t> SourceLines::*element_lines,
+                  std::size_t i) {
+  if (!lines || lines->path.empty()) return std::string();
+  const std::uint32_t line = SourceLines::at((*lines).*element_lines, static_cast<Index>(i));
+  return lines->path + (line ? ":" + std::to_string(line) : "") + ": ";
+}
+
 // The dual and midedge splits have no rules for sharp features, holes or
 // non-manifold elements: refuse them, naming the tag's line.
 void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                              const SourceLines* lines) {
   const std::string name(scheme.name);
-  auto where = [&](const std::vector<std::uint32_t> SourceLines::*tag_lines, std::size_t i) {
-    const std::uint32_t line = lines ? SourceLines::at((*lines).*tag_lines, static_cast<Index>(i)) : 0;
-    if (!lines || lines->path.empty()) return std::string();
-    return lines->path + (line ? ":" + std::to_string(line) : "") + ": ";
-  };
   if (options.boundary_rules == BoundaryRules::piecewise_smooth)
     throw InvalidInputError(name + " has no piecewise-smooth rules; use the standard boundary rules");
   if (options.allow_non_manifold) throw InvalidInputError(name + " cannot refine non-manifold meshes");
   for (std::size_t i = 0; i < mesh.tags.creases.size(); ++i)
     if (mesh.tags.creases[i].sharpness > 0.0)
-      throw InvalidInputError(where(&SourceLines::crease_lines, i) + name + " has no crease rules, but edge (" +
+      throw InvalidInputError(where(lines, &SourceLines::crease_lines, i) + name + " has no crease rules, but edge (" +
                               std::to_string(mesh.tags.creases[i].v0) + ", " + std::to_string(mesh.tags.creases[i].v1) +
                               ") is tagged as a crease");
   for (std::size_t i = 0; i < mesh.tags.corners.size(); ++i)
     if (mesh.tags.corners[i].sharpness > 0.0)
-      throw InvalidInputError(where(&SourceLines::corner_lines, i) + name + " has no corner rules, but vertex " +
+      throw InvalidInputError(where(lines, &SourceLines::corner_lines, i) + name + " has no corner rules, but vertex " +
                               std::to_string(mesh.tags.corners[i].vertex) + " is tagged as a corner");
   if (!mesh.tags.holes.empty())
-    throw InvalidInputError(where(&SourceLines::hole_lines, 0) + name + " has no rules for holes, but face " +
+    throw InvalidInputError(where(lines, &SourceLines::hole_lines, 0) + name + " has no rules for holes, but face " +
                             std::to_string(mesh.tags.holes[0]) + " is tagged as a hole");
 }
 
@@ -316,21 +321,17 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
   }
   if (scheme.needs_closed_mesh)
     for (Index v = 0; v < mesh.vertex_count(); ++v)
-      if (topology.vertex_kind(v) == VertexKind::boundary) {
-        const std::uint32_t line = lines ? SourceLines::at(lines->vertex_lines, v) : 0;
-        std::string where = lines && !lines->path.empty() ? lines->path + (line ? ":" + std::to_string(line) : "") + ": " : "";
-        throw InvalidInputError(where + std::string(scheme.name) + " needs a closed mesh, but vertex " +
-                                std::to_string(v) + " is on a boundary (it has no boundary rules)");
-      }
+      if (topology.vertex_kind(v) == VertexKind::boundary)
+        throw InvalidInputError(where(lines, &SourceLines::vertex_lines, static_cast<std::size_t>(v)) +
+                                std::string(scheme.name) + " needs a closed mesh, but vertex " + std::to_string(v) +
+                                " is on a boundary (it has no boundary rules)");
   if (scheme.needs_triangles)
     for (Index f = 0; f < mesh.face_count(); ++f)
-      if (mesh.face_size(f) != 3) {
-        const std::uint32_t line = lines ? SourceLines::at(lines->face_lines, f) : 0;
-        std::string where = lines && !lines->path.empty() ? lines->path + (line ? ":" + std::to_string(line) : "") + ": " : "";
-        throw InvalidInputError(where + std::string(scheme.name) + " needs a triangle mesh, but face " +
-                                std::to_string(f) + " has " + std::to_string(mesh.face_size(f)) +
+      if (mesh.face_size(f) != 3)
+        throw InvalidInputError(where(lines, &SourceLines::face_lines, static_cast<std::size_t>(f)) +
+                                std::string(scheme.name) + " needs a triangle mesh, but face " + std::to_string(f) +
+                                " has " + std::to_string(mesh.face_size(f)) +
                                 " vertices (triangulate it first, e.g. with --triangulate)");
-      }
   return topology;
 }
 
