@@ -168,7 +168,7 @@ LimitResult dual_limit_positions(const PolygonMesh& mesh, const Scheme& scheme, 
       result.sources[vi] = LimitSource::closed_form;
       continue;
     }
-    if (faces < 3) {  // no V-face (dual_split.cpp)
+    if (!dual_split_has_v_face(parent, v)) {
       ++result.approximated;
       continue;
     }

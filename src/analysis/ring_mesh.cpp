@@ -192,8 +192,7 @@ std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels
       next.face_centres.push_back((1.0 / static_cast<double>(sides.size())) * point);
     }
     for (Index v = 0; v < t.vertex_count(); ++v) {
-      const auto corners = t.vertex_corners(v);
-      if (corners.empty() || (t.vertex_kind(v) != VertexKind::boundary && corners.size() < 3)) continue;
+      if (!dual_split_has_v_face(t, v)) continue;
       next.face_centres.push_back(level.mesh.positions[static_cast<std::size_t>(v)]);
     }
     if (static_cast<Index>(next.face_centres.size()) != child.face_count())

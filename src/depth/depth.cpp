@@ -226,14 +226,15 @@ std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme
   LevelCost cost{0, mesh.vertex_count(), mesh.face_count(), t.edge_count(), mesh.corner_count(), 0};
   // Dual split: boundary and V-face counts of the current level.
   std::int64_t boundary_edges = 0, boundary_vertices = 0, v_faces = 0, v_face_corners = 0;
-  for (Index e = 0; e < t.edge_count(); ++e) boundary_edges += t.is_boundary_edge(e) ? 1 : 0;
-  for (Index v = 0; v < t.vertex_count(); ++v) {
-    const std::int64_t faces = t.vertex_face_count(v);
-    const bool boundary = t.vertex_kind(v) == VertexKind::boundary;
-    boundary_vertices += boundary ? 1 : 0;
-    if (faces > 0 && (boundary || faces >= 3)) {
-      ++v_faces;
-      v_face_corners += faces + (boundary ? 2 : 0);
+  if (scheme.split == SplitRule::dual) {
+    for (Index e = 0; e < t.edge_count(); ++e) boundary_edges += t.is_boundary_edge(e) ? 1 : 0;
+    for (Index v = 0; v < t.vertex_count(); ++v) {
+      const bool boundary = t.vertex_kind(v) == VertexKind::boundary;
+      boundary_vertices += boundary ? 1 : 0;
+      if (dual_split_has_v_face(t, v)) {
+        ++v_faces;
+        v_face_corners += t.vertex_face_count(v) + (boundary ? 2 : 0);
+      }
     }
   }
   std::vector<LevelCost> out;

@@ -25,6 +25,15 @@
 #include "split_detail.h"
 #include "subdiv/core/error.h"
 
+namespace subdiv {
+
+bool dual_split_has_v_face(const MeshTopology& topo, Index v) {
+  const Index faces = topo.vertex_face_count(v);
+  return faces > 0 && (topo.vertex_kind(v) == VertexKind::boundary || faces >= 3);
+}
+
+}  // namespace subdiv
+
 namespace subdiv::detail {
 
 SplitMap dual_split(const MeshTopology& topo, PolygonMesh& child) {
@@ -52,12 +61,8 @@ SplitMap dual_split(const MeshTopology& topo, PolygonMesh& child) {
 
   // Face sizes first, so that every face can be written in parallel.
   auto v_face_size = [&](Index v) -> Index {
-    const Index corners = topo.vertex_face_count(v);
-    const bool boundary = topo.vertex_kind(v) == VertexKind::boundary;
-    // An interior vertex of valence 2 leaves a 2-gon: its E-faces already
-    // share that edge.
-    if (corners == 0 || (!boundary && corners < 3)) return 0;
-    return corners + (boundary ? 2 : 0);
+    if (!dual_split_has_v_face(topo, v)) return 0;
+    return topo.vertex_face_count(v) + (topo.vertex_kind(v) == VertexKind::boundary ? 2 : 0);
   };
   std::vector<Index> v_face_offset(static_cast<std::size_t>(nv) + 1, 0);
   Index v_faces = 0;

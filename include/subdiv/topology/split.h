@@ -58,6 +58,13 @@ struct SplitMap {
   Index corner_point(Index c) const { return corner_points + c; }
 };
 
+/// Dual split: whether parent vertex v gets a V-face (its corner points
+/// around it, the boundary points of its boundary edges added). Every vertex
+/// with faces does, except an interior vertex with fewer than 3, whose 2-gon
+/// its E-faces already close. V-faces are numbered in vertex order among
+/// these vertices, after the F- and E-faces.
+bool dual_split_has_v_face(const MeshTopology& topology, Index v);
+
 /// The child faces of parent face f, [first, last): the quad split makes one
 /// per corner (child face = parent corner), the triangle split 4f .. 4f+3,
 /// the dual and midedge splits one (child face f, its F-face).
