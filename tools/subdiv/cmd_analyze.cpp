@@ -138,18 +138,10 @@ int run_curve_analysis(const CurveScheme& curve, const AnalyzeCommandOptions& op
 
 int run_analyze(const AnalyzeCommandOptions& opt) {
   if (const CurveScheme* curve = find_curve_scheme(opt.scheme); curve && !find_scheme(opt.scheme)) {
-    if (opt.tension && curve->tension == 0.0)
-      throw InvalidInputError("--tension: the curve scheme " + opt.scheme + " has no tension (four-point has)");
-    return run_curve_analysis(opt.tension ? four_point_scheme(*opt.tension) : *curve, opt);
+    return run_curve_analysis(with_tension(*curve, opt.tension), opt);
   }
-  const Scheme* scheme = &scheme_named(opt.scheme);
-  Scheme with_tension = *scheme;
-  if (opt.tension) {
-    if (!scheme->takes_tension)
-      throw InvalidInputError("--tension applies to butterfly and the curve scheme four-point, not to " + opt.scheme);
-    with_tension.parameters.tension = *opt.tension;
-    scheme = &with_tension;
-  }
+  const Scheme selected = with_tension(scheme_named(opt.scheme), opt.tension);
+  const Scheme* scheme = &selected;
 
   Configuration base;
   if (opt.boundary) base.kind = Configuration::Kind::boundary;

@@ -13,6 +13,7 @@
 
 #include "commands.h"
 #include "rule_options.h"
+#include "scheme_option.h"
 #include "output_checks.h"
 #include "subdiv/core/error.h"
 #include "subdiv/curves/curve_scheme.h"
@@ -56,21 +57,13 @@ const char* surface_option_given(const RefineCommandOptions& opt) {
   return nullptr;
 }
 
-std::string curve_scheme_names() {
-  std::string names;
-  for (const CurveScheme* s : all_curve_schemes()) names += (names.empty() ? "" : ", ") + std::string(s->name);
-  return names;
-}
-
 // Every polyline of the file refined on its own; the output holds the refined
 // points of each polyline in turn and one `l` line per polyline.
 int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& opt) {
   const std::string name(registered.name);
   if (const char* option = surface_option_given(opt))
     throw InvalidInputError(std::string(option) + " applies to surface schemes, not to the curve scheme " + name);
-  if (opt.tension && registered.tension == 0.0)
-    throw InvalidInputError("--tension: the curve scheme " + name + " has no tension (four-point has)");
-  const CurveScheme scheme = opt.tension ? four_point_scheme(*opt.tension) : registered;
+  const CurveScheme scheme = with_tension(registered, opt.tension);
   check_output_path(opt.input, opt.output);
 
   const MeshFile file = read_mesh(opt.input);
@@ -132,21 +125,14 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
 }
 
 int run_refine(const RefineCommandOptions& opt) {
-  const Scheme* scheme = find_scheme(opt.scheme);
-  if (!scheme) {
+  const Scheme* registered = find_scheme(opt.scheme);
+  if (!registered) {
     if (const CurveScheme* curve = find_curve_scheme(opt.scheme)) return run_curve_refine(*curve, opt);
-    std::string names;
-    for (const Scheme* s : all_schemes()) names += (names.empty() ? "" : ", ") + std::string(s->name);
-    throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + names +
+    throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + surface_scheme_names() +
                             "; curve schemes: " + curve_scheme_names() + ")");
   }
-  Scheme chosen = *scheme;  // with the --tension given
-  if (opt.tension) {
-    if (!scheme->takes_tension)
-      throw InvalidInputError("--tension applies to butterfly and the curve scheme four-point, not to " + opt.scheme);
-    chosen.parameters.tension = *opt.tension;
-    scheme = &chosen;
-  }
+  const Scheme chosen = with_tension(*registered, opt.tension);
+  const Scheme* scheme = &chosen;
   check_output_path(opt.input, opt.output);
 
   MeshFile file = read_mesh(opt.input);

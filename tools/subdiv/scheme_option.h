@@ -1,14 +1,28 @@
 #pragma once
-// The -s/--scheme option shared by refine, limit and analyze.
+// The -s/--scheme and --tension options shared by refine, limit, analyze,
+// depth and adaptive.
 
+#include <optional>
 #include <string>
 
+#include "subdiv/curves/curve_scheme.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv::cli {
 
+/// The registered surface schemes' names, comma-separated.
+std::string surface_scheme_names();
+/// The curve schemes' names, comma-separated.
+std::string curve_scheme_names();
+
 /// The registered scheme with this name; throws InvalidInputError naming
 /// the known schemes otherwise.
 const Scheme& scheme_named(const std::string& name);
+
+/// `scheme` with the --tension given, if any; throws InvalidInputError when
+/// the scheme takes none.
+Scheme with_tension(const Scheme& scheme, std::optional<double> tension);
+/// The same for a curve scheme (four-point has a tension).
+CurveScheme with_tension(const CurveScheme& scheme, std::optional<double> tension);
 
 }  // namespace subdiv::cli
