@@ -518,7 +518,7 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   if (scheme.split == SplitRule::dual) return dual_limit_positions(mesh, scheme, options);
   if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) + ": no limit positions for the " + to_string(scheme.split) +
-                            " (its configurations repeat only every two steps)");
+                            ": only the dual split's limits (a V-face's centroid) are written so far");
   // The closed forms are those of the standard rules. Under the
   // piecewise-smooth rules the generic masks of the modified matrices apply,
   // after at least one step: a vertex next to an extraordinary sharp vertex

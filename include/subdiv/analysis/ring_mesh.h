@@ -35,15 +35,16 @@ struct RingMesh {
 /// and angle on the centre. Throws InvalidInputError for k < 1 (interior:
 /// k < 3), rings < 1, or a split without a grid layout.
 ///
-/// For the dual split the configuration is an extraordinary face: "interior
+/// For the dual and midedge splits the configuration is an extraordinary face: "interior
 /// k" is a k-gon surrounded by `rings` rings of quads, laid out as the dual
 /// of the quad layout around a vertex of valence k (a vertex at each face
 /// centroid of that layout, a face around each of its interior vertices).
 /// Only interior configurations have a dual layout.
 RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int rings);
 
-/// A scheme with the split's topology and linear masks: bilinear, linear, or
-/// for the dual split corner points at (v + centroid(f)) / 2. Refining a
+/// A scheme with the split's topology and linear masks: bilinear, linear,
+/// for the dual split corner points at (v + centroid(f)) / 2, for the
+/// midedge split edge midpoints. Refining a
 /// layout with it gives the child levels' faces (and, for the primal splits,
 /// the child_layout positions).
 const Scheme& layout_placement(SplitRule split);
@@ -54,7 +55,9 @@ const Scheme& layout_placement(SplitRule split);
 /// (refined `levels` times); for the dual split, level by level, the corner
 /// point of corner v of face f at (v + face_centres[f]) / 2, each child face
 /// surrounding its parent element's layout point (an F-face its face's, an
-/// E-face the midpoint of its faces' points, a V-face its vertex). The
+/// E-face the midpoint of its faces' points, a V-face its vertex); for the
+/// midedge split (levels = 2 only) the two-step child of a corner placed as
+/// the dual split places it. The
 /// analysis identifies a neighbourhood with its image `period` steps down
 /// by them. Throws InvalidInputError for levels < 1.
 std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels = 1);
