@@ -10,6 +10,7 @@
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/triangulate.h"
 #include "subdiv/mesh/validation.h"
+#include "support/refine_options.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -21,11 +22,7 @@ const Scheme& scheme(const char* name) {
   return *s;
 }
 
-RefineOptions levels(int n) {
-  RefineOptions o;
-  o.levels = n;
-  return o;
-}
+using test::levels;
 
 PolygonMesh creased_cube() {
   PolygonMesh m = test::cube();

@@ -15,6 +15,7 @@
 #include "subdiv/refine/refine.h"
 #include "support/bsplines.h"
 #include "support/stencil_rows.h"
+#include "support/refine_options.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -22,11 +23,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-RefineOptions levels(int n) {
-  RefineOptions options;
-  options.levels = n;
-  return options;
-}
+using test::levels;
 
 // One k-gon, vertices on the unit circle.
 PolygonMesh polygon(int k) {

@@ -13,16 +13,13 @@
 #include "subdiv/mesh/validation.h"
 #include "subdiv/refine/refine.h"
 #include "support/stencil_rows.h"
+#include "support/refine_options.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
 namespace {
 
-RefineOptions levels(int n) {
-  RefineOptions options;
-  options.levels = n;
-  return options;
-}
+using test::levels;
 
 // A closed mesh of triangles and quads: the cube with one face split into
 // two triangles, positions jittered.
