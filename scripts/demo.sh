@@ -4,9 +4,10 @@
 # Catmull-Clark (and the triangle meshes with Loop), and moves its vertices
 # to their limit positions; then subdivides the cube and the tetrahedron with
 # every surface scheme (the survey's comparison), analyses Loop,
-# Catmull-Clark, the Butterfly schemes and Doo-Sabin with pictures, refines the L-shaped patch with the standard and the
-# piecewise-smooth boundary rules, and refines Spot to an accuracy (a priori
-# depth, adaptive refinement). Results under out/.
+# Catmull-Clark, the Butterfly schemes and Doo-Sabin with pictures, refines
+# the L-shaped patch with the standard and the piecewise-smooth boundary
+# rules, and refines Spot to an accuracy (a priori depth, adaptive
+# refinement). Results under out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
