@@ -400,11 +400,14 @@ run depth-cc 0 depth "$meshes/cube.obj" -s catmull-clark --eps 0.01 --verify &&
 run depth-loop 0 depth "$meshes/tetrahedron.obj" -s loop --eps 0.01 --verify &&
   stdout_has depth-loop "bound (paper (regular) + analysis (extraordinary))" && stdout_has depth-loop "depth 3 would not have been enough"
 run depth-doo-sabin 0 depth "$meshes/cube.obj" -s doo-sabin --eps 0.01 --verify &&
-  stdout_has depth-doo-sabin "bound (paper (regular) + analysis estimate (extraordinary)): distance to the limit after k >= 1 steps" &&
-  stdout_has depth-doo-sabin "extraordinary face of 3 sides" && stdout_has depth-doo-sabin "     4           1536           1538" &&
+  stdout_has depth-doo-sabin "bound (paper (regular) + local subdivision matrix (extraordinary)): distance to the limit after k >= 2 steps" &&
+  stdout_has depth-doo-sabin "(worst at a face of 3 sides)" && stdout_has depth-doo-sabin "     4           1536           1538" &&
   stdout_has depth-doo-sabin "verify: after 4 steps" && stdout_has depth-doo-sabin ": within"
 run depth-butterfly 1 depth "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 && stderr_one_line depth-butterfly &&
   stderr_has depth-butterfly "butterfly: no depth bound for an interpolating scheme"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/square.obj"
+run depth-doo-sabin-corner 1 depth "$work/square.obj" -s doo-sabin --eps 0.01 && stderr_one_line depth-doo-sabin-corner &&
+  stderr_has depth-doo-sabin-corner "doo-sabin: no depth bound yet at a face of 3 sides on the boundary"
 run depth-verify-budget 1 depth "$meshes/cube.obj" -s loop --triangulate --eps 1e-8 --verify &&
   stderr_one_line depth-verify-budget && stderr_has depth-verify-budget "--verify: depth 23 has" &&
   stderr_has depth-verify-budget "over the verification budget of 2^28 faces"
