@@ -35,6 +35,7 @@
 
 #include "subdiv/rules/generalized_catmull_clark.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -189,9 +190,11 @@ void set_degree(Scheme& scheme, int degree) {
 std::string describe_smoothing(const SchemeParameters& p) {
   std::string out = "n=" + std::to_string(p.degree);
   const int r = (p.degree - 1) / 2;
-  for (int i = 0; i < r && !p.smoothing.empty(); ++i) {
-    const SmoothingWeights& w = p.smoothing[p.smoothing.size() == 1 ? 0 : static_cast<std::size_t>(i)];
-    out += fmt::format("{} B_{}: ", i == 0 ? "," : ";", i + 1);
+  const bool shared = p.smoothing.size() == 1;
+  for (int i = 0; i < (shared ? std::min(r, 1) : r) && i < static_cast<int>(p.smoothing.size()); ++i) {
+    const SmoothingWeights& w = p.smoothing[static_cast<std::size_t>(i)];
+    const std::string which = shared && r > 1 ? fmt::format("B_1..B_{}", r) : fmt::format("B_{}", i + 1);
+    out += fmt::format("{} {}: ", i == 0 ? "," : ";", which);
     out += w.rule == SmoothingWeights::Rule::catmull_clark ? std::string("alpha=1-3/m beta=2/m")
                                                            : fmt::format("alpha={:.6g} beta={:.6g}", w.alpha, w.beta);
     for (const SmoothingWeights::AtValence& v : w.valences)
