@@ -136,6 +136,21 @@ TEST(GccClosedForms, RegularSecondDifferenceNorm) {
   EXPECT_NEAR(regular_second_difference_norm(gcc(3, 0.25, 0.5)), 0.25, 1e-15);
 }
 
+TEST(GccClosedForms, MidpointDegreeTwoAtExtraordinaryFaces) {
+  // M_2 = A R maps a k-gon's corners to 1/2 v_i + 1/8 (v_i-1 + v_i+1) +
+  // 1/(4k) sum v: its Fourier transform at frequency 1 is 1/2 + cos(2 pi/k)/4,
+  // the subdominant eigenvalue (Prautzsch and Chen 2011 for M_2).
+  Scheme s = midpoint_scheme();
+  set_degree(s, 2);
+  for (int k = 3; k <= 10; ++k) {
+    Configuration c;
+    c.k = k;
+    const ConfigurationAnalysis a = analyze(s, c);
+    EXPECT_EQ(a.verdict, SmoothnessVerdict::c1) << k;
+    EXPECT_NEAR(a.leading[1].real(), 0.5 + 0.25 * std::cos(2 * M_PI / k), 1e-12) << k;
+  }
+}
+
 TEST(GccClosedForms, RefusesOtherSchemes) {
   EXPECT_THROW(gcc_theorem(gcc(5, 0.25, 0.5), 5), InvalidInputError);
   EXPECT_THROW(gcc_theorem(gcc(3, 0.25, 0.5), 2), InvalidInputError);

@@ -144,6 +144,43 @@ TEST(GeneralizedCatmullClark, MidpointDegreeTwoIsDooSabinOnQuadMeshes) {
   }
 }
 
+TEST(GeneralizedCatmullClark, MidpointDegreeThreeGoldenWeights) {
+  // M_3 = B_{1/4,1/2} R is Catmull-Clark-type with alpha~ = 1/4 + 1/4 + 1/16
+  // = 9/16, beta~ = 1/4 + 1/8 = 3/8, gamma~ = 1/16 at every valence: at a
+  // cube corner (m = 3) 9/16 on the vertex, 1/8 on each neighbour, 1/48 on
+  // each opposite vertex.
+  const PolygonMesh cube = test::cube();
+  const MeshTopology t(cube);
+  const StencilTable table = refine_stencil_table(cube, midpoint(3), levels(1));
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    const auto row = test::merged_row(table, t.face_count() + t.edge_count() + v);
+    EXPECT_NEAR(row.at(v), 9.0 / 16, 1e-15);
+    for (const Index e : t.vertex_edges(v)) EXPECT_NEAR(row.at(t.other_vertex(e, v)), 1.0 / 8, 1e-15);
+    for (const Index c : t.vertex_corners(v))
+      EXPECT_NEAR(row.at(t.corner_vertex(t.corner_next(t.corner_next(c)))), 1.0 / 48, 1e-15);
+    EXPECT_EQ(row.size(), 7u);
+  }
+}
+
+TEST(GeneralizedCatmullClark, VertexChannelsFollowThePositions) {
+  // Every step carries vertex channels through the same masks.
+  PolygonMesh mesh = cut_cube();
+  VertexChannel copy{"copy", 3, {}};
+  for (const Vec3& p : mesh.positions) copy.values.insert(copy.values.end(), {p.x, p.y, p.z});
+  mesh.vertex_channels.push_back(copy);
+  for (int n = 2; n <= 5; ++n) {
+    const PolygonMesh fine = refine(mesh, gcc(n, 0.3, 0.4), levels(2));
+    ASSERT_EQ(fine.vertex_channels.size(), 1u);
+    for (Index v = 0; v < fine.vertex_count(); ++v)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(fine.vertex_channels[0].values[3 * static_cast<std::size_t>(v) + static_cast<std::size_t>(c)],
+                    c == 0 ? fine.positions[static_cast<std::size_t>(v)].x
+                    : c == 1 ? fine.positions[static_cast<std::size_t>(v)].y
+                             : fine.positions[static_cast<std::size_t>(v)].z,
+                    1e-14);
+  }
+}
+
 TEST(GeneralizedCatmullClark, MidpointIsRepeatedAveraging) {
   // M_n = A^(n-1) R on any closed mesh: B_{1/4,1/2} = A^2 at every valence.
   for (const PolygonMesh& mesh : {test::cube(), cut_cube(), test::tetrahedron()}) {

@@ -37,10 +37,12 @@ std::string format_gcc_report(const Scheme& scheme, const std::vector<Configurat
     out += "(the closed forms of Example 6.2 are M_3-bar's, with one smoothing operator)\n";
   }
   const double norm = regular_second_difference_norm(scheme);
-  const double bound = gcc_second_difference_bound(scheme.parameters.smoothing.front());
-  out += fmt::format("regular case (Theorem 3.1): |U_dd| = {:.6g} from the stencils{}; Lemma 3.2 (c) bound for B_1 R: "
-                     "max{{(2a+b)/4, 1/2-(2a+b)/4}} = {:.6g}: {}\n",
-                     norm, n == 3 ? "" : " (the whole level)", bound,
+  const std::string bound =
+      n < 3 ? std::string("; n = 2 has no B (A R)")
+            : fmt::format("; Lemma 3.2 (c) bound for B_1 R: max{{(2a+b)/4, 1/2-(2a+b)/4}} = {:.6g}",
+                          gcc_second_difference_bound(scheme.parameters.smoothing.front()));
+  out += fmt::format("regular case (Theorem 3.1): |U_dd| = {:.6g} from the stencils{}{}: {}\n", norm,
+                     n == 3 ? "" : " (the whole level)", bound,
                      norm < 0.5 ? "C1 on regular meshes (|U_dd| < 1/2)" : "not shown C1 (|U_dd| >= 1/2)");
   return out;
 }
@@ -52,7 +54,7 @@ nlohmann::json gcc_report_json(const Scheme& scheme, const std::vector<Configura
   j["rho_b_bound"] = gcc_rho_b_bound(n);
   j["rho_a_bound"] = gcc_rho_a_bound(n);
   j["regular_second_difference_norm"] = regular_second_difference_norm(scheme);
-  j["lemma_3_2_bound"] = gcc_second_difference_bound(scheme.parameters.smoothing.front());
+  if (n >= 3) j["lemma_3_2_bound"] = gcc_second_difference_bound(scheme.parameters.smoothing.front());
   if (closed_forms_apply(scheme)) {
     nlohmann::json rows = nlohmann::json::array();
     for (const ConfigurationAnalysis& a : results) {
