@@ -109,6 +109,9 @@ struct Level {
   /// Concave corners whose one-ring `fn` modifies after the masks
   /// (piecewise-smooth rules).
   std::vector<detail::FlatnessSite> flatness;
+  /// The child's topology, when the level built it already (a composite
+  /// scheme's smoothing steps need their quad mesh's).
+  std::optional<MeshTopology> child_topology;
 };
 
 // One step: the child's faces and tags, then `fn` with the parent level and
@@ -165,6 +168,7 @@ Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, cons
     } else if (step.split == SplitRule::identity && quads) {
       source = std::move(level.child);
       level = refine_step(source, *quads, step, boundary, method, options, evaluate(source));
+      if (i + 1 == steps.size()) level.child_topology = std::move(quads);  // the same faces
     } else if (step.split == SplitRule::dual && quads) {
       source = std::move(level.child);
       level = refine_step(parent, topology, step, boundary, method, options, evaluate(source));
@@ -190,6 +194,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
     if (!topology) topology.emplace(current);
     Level level = step(current, *topology);
     if (l + 1 == options.levels) topology.reset();
+    else if (level.child_topology) topology = std::move(level.child_topology);
     else if (scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
     else if (scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
     else topology.reset();  // built from the child's faces

@@ -116,6 +116,15 @@ TEST(GccClosedForms, Condition52FailsWhereTheNumericsFail) {
   EXPECT_NE(a.verdict, SmoothnessVerdict::c1);
   EXPECT_FALSE(a.eigenvalue_condition);
   EXPECT_NEAR(std::abs(a.leading[1]), std::abs(t.mu0), 1e-10);
+  // The same at valence 3, where (5.1) is the condition: mu_0(3) = 0.592575 > lambda(3) = 0.410097.
+  s.parameters.smoothing[0].valences = {{3, 0.9, 0.05}};
+  const GccTheorem t3 = gcc_theorem(s, 3);
+  EXPECT_FALSE(t3.condition_5_1);
+  EXPECT_FALSE(t3.proves_c1);
+  c.k = 3;
+  const ConfigurationAnalysis a3 = analyze(s, c);
+  EXPECT_NE(a3.verdict, SmoothnessVerdict::c1);
+  EXPECT_NEAR(std::abs(a3.leading[1]), std::abs(t3.mu0), 1e-10);
   // The constant neighbours of that set, and Catmull-Clark's weights, are proven.
   EXPECT_TRUE(gcc_theorem(gcc(3, 0.25, 0.5), 5).proves_c1);
   EXPECT_TRUE(gcc_theorem(generalized_catmull_clark_scheme(), 3).proves_c1);

@@ -269,14 +269,12 @@ TEST(GeneralizedCatmullClark, PerStepWeights) {
   set_degree(two, 5);
   SmoothingWeights b1, b2;
   b1.alpha = 0.1, b1.beta = 0.6;
-  b2.alpha = 0.4, b2.beta = 0.3;
+  b2.alpha = 0.4, b2.beta = 0.35;  // gamma = 0.25: edge and opposite weights differ
   two.parameters.smoothing = {b1, b2};
   const PolygonMesh got = refine(test::cube(), two, levels(1));
   Scheme first = gcc(3, 0.1, 0.6);
   const PolygonMesh after_first = refine(test::cube(), first, levels(1));
-  // B_2 alone on the refined cube is M_3-bar of it minus R: compare against
-  // gcc(5) with b1 then b2 swapped, which must differ, and against the
-  // hand-applied second smoothing.
+  // B_2 applied by hand to B_1 R of the cube, the Figure 1.3 weights.
   const MeshTopology t(after_first);
   for (Index v = 0; v < t.vertex_count(); ++v) {
     const int m = t.valence(v);
@@ -288,6 +286,7 @@ TEST(GeneralizedCatmullClark, PerStepWeights) {
                   after_first.positions[static_cast<std::size_t>(t.corner_vertex(t.corner_next(t.corner_next(c))))];
     EXPECT_LT(norm(got.positions[static_cast<std::size_t>(v)] - expected), 1e-14) << v;
   }
+  // The order matters: B_1 B_2 R is another mesh.
   two.parameters.smoothing = {b2, b1};
   const PolygonMesh swapped = refine(test::cube(), two, levels(1));
   double largest = 0.0;
