@@ -100,6 +100,23 @@ TEST(GccClosedForms, VerdictsAgreeWithTheorem61) {
     }
 }
 
+TEST(GccClosedForms, ProvenVerdictsHoldForNonConstantWeights) {
+  // Where Remark 5.7's conditions hold (m = 3 and m >= 5 with other weights
+  // there than at valence 4), the numerical analysis finds C1 too.
+  for (const auto& [alpha, beta] : kGrid) {
+    Scheme s = gcc(3, alpha, beta);
+    s.parameters.smoothing[0].valences = {{3, 0.1, 0.6}, {5, 0.5, 0.3}, {7, 0.05, 0.15}};
+    for (int m : {3, 5, 7}) {
+      const GccTheorem t = gcc_theorem(s, m);
+      EXPECT_FALSE(t.constant);
+      if (!t.proves_c1) continue;
+      Configuration c;
+      c.k = m;
+      EXPECT_EQ(analyze(s, c).verdict, SmoothnessVerdict::c1) << alpha << " " << beta << " m " << m;
+    }
+  }
+}
+
 TEST(GccClosedForms, Condition52FailsWhereTheNumericsFail) {
   // Non-constant weights: alpha(5) = 0.9, beta(5) = 0.05 make mu_0 = 0.593 >
   // lambda = 0.5500: (5.2) fails, and mu_0 (frequency 0, simple) is the
