@@ -219,6 +219,7 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
 }  // namespace
 
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
+  if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no depth bound for composite schemes yet: it needs limit positions");
   if (scheme.split == SplitRule::dual) return dual_depth_bound(mesh, scheme, options);
   if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) + ": no depth bound for the " + to_string(scheme.split) +
