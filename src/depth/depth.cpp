@@ -160,40 +160,62 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
     for (Index f = 0; f < t.face_count(); ++f)
       if (t.face_size(f) != 4) extraordinary.push_back(f);
     if (extraordinary.empty()) return doo_sabin_bound(max_second_difference(level), start);
-    // A face at the boundary stays there: its neighbourhood never becomes
-    // the interior one the operator is computed for.
-    for (const Index f : extraordinary)
-      for (const Index v : t.face_vertices(f))
-        if (t.vertex_kind(v) != VertexKind::interior)
-          throw InvalidInputError(std::string(scheme.name) + ": no depth bound yet at a face of " +
-                                  std::to_string(t.face_size(f)) + " sides on the boundary (face " +
-                                  std::to_string(f) + " after " + std::to_string(start) +
-                                  " steps): the bound covers extraordinary faces inside the mesh only");
+    // Faces at the boundary stay there, outside the canonical layout: their
+    // operator is read off this level's step to the next, once the next
+    // level's neighbourhood repeats this one's.
+    RefineOptions one = options.refine;
+    one.levels = 1;
+    one.on_level = nullptr;
+    const auto on_boundary = [&](Index f) {
+      const auto face = t.face_vertices(f);
+      return std::any_of(face.begin(), face.end(), [&](Index v) { return t.vertex_kind(v) != VertexKind::interior; });
+    };
+    std::optional<StencilTable> step;
+    std::optional<MeshTopology> child_topology;
+    PolygonMesh child;
+    if (std::any_of(extraordinary.begin(), extraordinary.end(), on_boundary)) {
+      step = refine_stencil_table(level, scheme, one);
+      child = refine(level, scheme, one);
+      child_topology.emplace(child);
+    }
+    std::vector<const DualFaceOperator*> face_operators;
     std::vector<Eigen::MatrixXd> neighbourhoods;
-    bool canonical = true;
+    std::vector<DualFaceOperator> boundary_operators;
+    boundary_operators.reserve(extraordinary.size());
+    bool ready = true;
     for (const Index f : extraordinary) {
-      std::optional<Eigen::MatrixXd> around =
-          canonical_neighbourhood(operator_at(t.face_size(f)), t, level.positions, f);
+      if (on_boundary(f)) {
+        std::optional<DualFaceOperator> op = local_face_operator(t, *step, *child_topology, f);
+        if (!op) {
+          ready = false;
+          break;
+        }
+        boundary_operators.push_back(std::move(*op));
+        face_operators.push_back(&boundary_operators.back());
+        neighbourhoods.push_back(local_neighbourhood(t, level.positions, f));
+        continue;
+      }
+      const DualFaceOperator& op = operator_at(t.face_size(f));
+      std::optional<Eigen::MatrixXd> around = canonical_neighbourhood(op, t, level.positions, f);
       if (!around) {
-        canonical = false;
+        ready = false;
         break;
       }
+      face_operators.push_back(&op);
       neighbourhoods.push_back(std::move(*around));
     }
-    if (!canonical) {
+    if (!ready) {
       if (start == kMaxDualStart || 4 * level.corner_count() > kMaxDualStartFaces)
         throw InvalidInputError(std::string(scheme.name) + ": no depth bound: after " + std::to_string(start) +
-                                " steps extraordinary faces are still too close to each other for the bound");
-      RefineOptions one = options.refine;
-      one.levels = 1;
-      one.on_level = nullptr;
-      level = refine(level, scheme, one);
+                                " steps the faces with other than 4 sides are still too close to each other or to "
+                                "the boundary for the bound");
+      level = step ? std::move(child) : refine(level, scheme, one);
       continue;
     }
     double amplitude = 0.0, rate = 0.0;
     int worst = 0;
     for (std::size_t i = 0; i < extraordinary.size(); ++i) {
-      const DualFaceOperator& op = operator_at(t.face_size(extraordinary[i]));
+      const DualFaceOperator& op = *face_operators[i];
       const double a = dual_face_amplitude(op, neighbourhoods[i]);
       if (a > amplitude || worst == 0) {
         amplitude = a;

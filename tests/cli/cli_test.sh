@@ -441,8 +441,8 @@ run depth-doo-sabin 0 depth "$meshes/cube.obj" -s doo-sabin --eps 0.01 --verify 
 run depth-butterfly 1 depth "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 && stderr_one_line depth-butterfly &&
   stderr_has depth-butterfly "butterfly: no depth bound for an interpolating scheme"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/square.obj"
-run depth-doo-sabin-corner 1 depth "$work/square.obj" -s doo-sabin --eps 0.01 && stderr_one_line depth-doo-sabin-corner &&
-  stderr_has depth-doo-sabin-corner "doo-sabin: no depth bound yet at a face of 3 sides on the boundary"
+run depth-doo-sabin-corner 0 depth "$work/square.obj" -s doo-sabin --eps 0.01 --verify &&
+  stdout_has depth-doo-sabin-corner "after k >= 3 steps" && stdout_has depth-doo-sabin-corner ": within"
 run depth-verify-budget 1 depth "$meshes/cube.obj" -s loop --triangulate --eps 1e-8 --verify &&
   stderr_one_line depth-verify-budget && stderr_has depth-verify-budget "--verify: depth 23 has" &&
   stderr_has depth-verify-budget "over the verification budget of 2^28 faces"

@@ -14,6 +14,7 @@
 #include "subdiv/core/types.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
+#include "subdiv/refine/stencil_table.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv {
@@ -41,19 +42,26 @@ struct DualFaceOperator {
   /// neighbourhood's vertices, where a, v and b all lie in it.
   std::vector<SparseRow> second_difference;
 
-  /// How to find the neighbourhood in another mesh: the ring mesh's faces
-  /// touching the face's one-ring, each reached across an edge of an
-  /// earlier one (step 0 is the face itself).
+  /// How to find the neighbourhood in another mesh: the faces touching the
+  /// face's one-ring, each reached across an edge of an earlier one (step 0
+  /// is the face itself), with what a match must reproduce.
   struct Step {
     int from = -1;       ///< earlier step whose face this one borders
     int from_corner = 0; ///< that face's local corner whose outgoing edge is crossed
     int corner = 0;      ///< this face's local corner on the crossed edge (starting at the far end)
-    std::vector<Eigen::Index> columns;  ///< the matrix column of each local corner's vertex
+    std::vector<Eigen::Index> columns;  ///< the column of each local corner's vertex
+    std::vector<char> boundary;         ///< whether each local corner's outgoing edge is a boundary edge
   };
-  std::vector<Step> steps;
-  /// Local corners of the face vertices' neighbours that must have 4 faces:
-  /// (step, local corner) for each vertex of the one-ring.
-  std::vector<std::pair<int, int>> one_ring;
+  struct OneRingVertex {
+    int step = 0, corner = 0;  ///< where the pattern meets it
+    VertexKind kind = VertexKind::interior;
+    Index faces = 4;
+  };
+  struct Pattern {
+    std::vector<Step> steps;
+    std::vector<OneRingVertex> one_ring;
+  };
+  Pattern pattern;
 };
 
 /// The operator of `scheme` (a dual-split scheme) at a face of k sides.
@@ -73,6 +81,18 @@ std::optional<Eigen::MatrixXd> canonical_neighbourhood(const DualFaceOperator& o
 /// the amplitude of the face's term. The sequence settles geometrically
 /// (ratio |lambda_3 / lambda_1|), so `powers` steps reach its supremum
 /// to rounding.
+/// Faces the canonical layout does not cover (at the boundary): the
+/// operator read off the mesh itself, with the neighbourhood's vertices in
+/// vertex order as columns. `step` is the stencil table of one step from
+/// `parent` to `child`. Nothing when the child's neighbourhood of face f
+/// (the F-face of f is child face f) does not repeat the parent's, when its
+/// rows reach outside it, or when its spectrum is not 1 above |lambda_1| < 1.
+std::optional<DualFaceOperator> local_face_operator(const MeshTopology& parent, const StencilTable& step,
+                                                    const MeshTopology& child, Index f);
+
+/// Face f's two-ring neighbourhood in vertex order (local_face_operator's columns).
+Eigen::MatrixXd local_neighbourhood(const MeshTopology& topology, const std::vector<Vec3>& positions, Index f);
+
 double dual_face_amplitude(const DualFaceOperator& op, const Eigen::MatrixXd& neighbourhood, int powers = 64);
 
 }  // namespace subdiv
