@@ -13,6 +13,9 @@
 //   midedge split (QD, arity sqrt 2): a child vertex per edge, a face per
 //     parent face and vertex; child vertices are numbered as the edges
 //     (src/topology/midedge_split.cpp). Closed meshes only.
+//   quasi 4-8 bisection (arity sqrt 2, Velho): a binary step whose split
+//     depends on the positions; not a split_topology() rule, see
+//     subdiv/topology/bisection_split.h.
 //
 // The child is a complete PolygonMesh (faces, tags, face-varying indices);
 // its positions and vertex channels are left for a scheme's masks to fill.
@@ -25,14 +28,15 @@
 
 namespace subdiv {
 
-enum class SplitRule { quad, triangle, dual, midedge };
+enum class SplitRule { quad, triangle, dual, midedge, quasi_4_8 };
 
 /// The primal splits keep the parent's vertices (as vertex points) and its
 /// sharp features; the analysis' vertex configurations, limit positions,
 /// depth and adaptive refinement are written for them.
 constexpr bool is_primal(SplitRule r) { return r == SplitRule::quad || r == SplitRule::triangle; }
 
-/// How much one step shrinks the faces' size: 2, or sqrt 2 for the midedge split.
+/// How much one step shrinks the faces' size: 2, or sqrt 2 for the midedge
+/// split and the quasi 4-8 bisection.
 double arity(SplitRule r);
 
 const char* to_string(SplitRule);
