@@ -34,7 +34,9 @@ void check_quasi_4_8(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 // One level: the bisected child, its topology and what smoothing keeps.
 struct Step {
   Step(const PolygonMesh& parent, const RefineOptions& options)
-      : parent_topology(parent), map(bisection_split(parent, parent_topology, child)), child_topology(child),
+      : parent_topology(parent),
+        map(bisection_split(parent, parent_topology, child)),
+        child_topology(child),
         fixed(quasi_4_8_fixed_vertices(child, child_topology, options.quasi_4_8_boundary)),
         boundary(options.quasi_4_8_boundary) {}
   Quasi48Level view() const { return {child_topology, map, fixed, boundary, parent_topology}; }

@@ -33,8 +33,7 @@ const Scheme& quasi_4_8_scheme() {
     Scheme s{"quasi-4-8",
              "approximating, geometry-sensitive bisection (one binary step per level, two per 4-8 step), "
              "triangle meshes; two-pass averaging, tags not smoothed",
-             "L. Velho: Quasi 4-8 subdivision, Computer Aided Geometric Design 18(4), 2001",
-             SplitRule::quasi_4_8,
+             "L. Velho: Quasi 4-8 subdivision, Computer Aided Geometric Design 18(4), 2001", SplitRule::quasi_4_8,
              true};
     s.period = 2;  // two binary steps make one 4-8 step
     return s;
@@ -61,9 +60,7 @@ std::vector<char> quasi_4_8_fixed_vertices(const PolygonMesh& child, const MeshT
 
 namespace {
 
-bool on_boundary(const Quasi48Level& level, Index v) {
-  return level.child.vertex_kind(v) == VertexKind::boundary;
-}
+bool on_boundary(const Quasi48Level& level, Index v) { return level.child.vertex_kind(v) == VertexKind::boundary; }
 
 // The neighbours a vertex is smoothed over: all of them inside, those along
 // boundary edges on a (smoothed) boundary.

@@ -41,8 +41,9 @@ std::vector<Index> bisection_edge_order(const MeshTopology& topology, std::span<
     const double floor = (1.0 - tie_tolerance) * length[static_cast<std::size_t>(order[first])];
     std::size_t last = first + 1;
     while (last < order.size() && length[static_cast<std::size_t>(order[last])] >= floor) ++last;
-    std::sort(order.begin() + static_cast<std::ptrdiff_t>(first), order.begin() + static_cast<std::ptrdiff_t>(last),
-              [&](Index x, Index y) { return radial[static_cast<std::size_t>(x)] < radial[static_cast<std::size_t>(y)]; });
+    std::sort(
+        order.begin() + static_cast<std::ptrdiff_t>(first), order.begin() + static_cast<std::ptrdiff_t>(last),
+        [&](Index x, Index y) { return radial[static_cast<std::size_t>(x)] < radial[static_cast<std::size_t>(y)]; });
     first = last;
   }
   return order;

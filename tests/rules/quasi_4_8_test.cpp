@@ -99,7 +99,8 @@ TEST(QuasiFourEight, StencilsOfFigure4OnTheRegularGrid) {
         // A new vertex: its four sources lie at h / sqrt(2) around their
         // mean (a square centre, then an edge midpoint).
         Vec3 at;
-        for (std::size_t j = 0; j < vs.size(); ++j) at += (1.0 / double(vs.size())) * src[static_cast<std::size_t>(vs[j])];
+        for (std::size_t j = 0; j < vs.size(); ++j)
+          at += (1.0 / double(vs.size())) * src[static_cast<std::size_t>(vs[j])];
         if (!inside(at)) continue;  // boundary midpoints have two sources
         ASSERT_EQ(vs.size(), 4u) << "row " << r;
         for (std::size_t j = 0; j < 4; ++j) {
@@ -114,10 +115,14 @@ TEST(QuasiFourEight, StencilsOfFigure4OnTheRegularGrid) {
       ASSERT_EQ(vs.size(), 9u) << "row " << r;
       for (std::size_t j = 0; j < 9; ++j) {
         const double d = norm(src[static_cast<std::size_t>(vs[j])] - at);
-        if (d < 1e-12) EXPECT_DOUBLE_EQ(ws[j], 5.0 / 8.0);
-        else if (std::abs(d - h) < 1e-12) EXPECT_DOUBLE_EQ(ws[j], 1.0 / 16.0);
-        else if (std::abs(d - h * std::sqrt(2.0)) < 1e-12) EXPECT_DOUBLE_EQ(ws[j], 1.0 / 32.0);
-        else ADD_FAILURE() << "weight at distance " << d << " from row " << r;
+        if (d < 1e-12)
+          EXPECT_DOUBLE_EQ(ws[j], 5.0 / 8.0);
+        else if (std::abs(d - h) < 1e-12)
+          EXPECT_DOUBLE_EQ(ws[j], 1.0 / 16.0);
+        else if (std::abs(d - h * std::sqrt(2.0)) < 1e-12)
+          EXPECT_DOUBLE_EQ(ws[j], 1.0 / 32.0);
+        else
+          ADD_FAILURE() << "weight at distance " << d << " from row " << r;
       }
       ++checked_old;
     }
@@ -132,7 +137,9 @@ TEST(QuasiFourEight, SimilarityInvariant) {
   const PolygonMesh mesh = bumpy_ngon();
   PolygonMesh moved = mesh;
   const double c = std::cos(0.7), s = std::sin(0.7);
-  const auto map = [&](Vec3 p) { return Vec3{2.5 * (c * p.x - s * p.y) + 1, 2.5 * (s * p.x + c * p.y) - 3, 2.5 * p.z + 4}; };
+  const auto map = [&](Vec3 p) {
+    return Vec3{2.5 * (c * p.x - s * p.y) + 1, 2.5 * (s * p.x + c * p.y) - 3, 2.5 * p.z + 4};
+  };
   for (Vec3& p : moved.positions) p = map(p);
   const PolygonMesh a = refine(mesh, quasi_4_8_scheme(), steps(6));
   const PolygonMesh b = refine(moved, quasi_4_8_scheme(), steps(6));
@@ -144,8 +151,8 @@ TEST(QuasiFourEight, SimilarityInvariant) {
 TEST(QuasiFourEight, TaggedVerticesAndEdgesAreNotSmoothed) {
   PolygonMesh mesh = bumpy_ngon();
   mesh.tags.corners.push_back({0, kInfiniteSharpness, CornerType::unspecified, std::nullopt});  // the centre
-  mesh.tags.creases.push_back({3, 4, 10.0});    // a rim edge
-  mesh.tags.creases.push_back({0, 6, 1.0});     // a spoke
+  mesh.tags.creases.push_back({3, 4, 10.0});                                                    // a rim edge
+  mesh.tags.creases.push_back({0, 6, 1.0});                                                     // a spoke
   const PolygonMesh out = refine(mesh, quasi_4_8_scheme(), steps(4, Quasi48Boundary::smoothed));
   EXPECT_EQ(out.positions[0], mesh.positions[0]);
   for (const Index v : {3, 4, 6}) EXPECT_EQ(out.positions[v], mesh.positions[v]) << "vertex " << v;

@@ -2,6 +2,8 @@
 // examples: n-regular neighbourhoods, perturbed and warped hexagons, n > 6,
 // the 4-8 torus.
 
+#include "subdiv/topology/bisection_split.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +12,6 @@
 #include "subdiv/core/error.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/quasi_4_8.h"
-#include "subdiv/topology/bisection_split.h"
 #include "support/four_eight_meshes.h"
 
 namespace subdiv {
@@ -30,8 +31,7 @@ std::set<std::pair<Index, Index>> edge_set(const PolygonMesh& mesh) {
   std::set<std::pair<Index, Index>> edges;
   for (Index f = 0; f < mesh.face_count(); ++f) {
     const auto vs = mesh.face(f);
-    for (std::size_t i = 0; i < vs.size(); ++i)
-      edges.insert(std::minmax(vs[i], vs[(i + 1) % vs.size()]));
+    for (std::size_t i = 0; i < vs.size(); ++i) edges.insert(std::minmax(vs[i], vs[(i + 1) % vs.size()]));
   }
   return edges;
 }

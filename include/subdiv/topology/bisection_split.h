@@ -45,7 +45,7 @@ inline constexpr double kDefaultTieTolerance = 1e-9;
 
 /// Where a bisection step's child vertices come from.
 struct BisectionMap {
-  Index old_vertex_count = 0;     ///< child vertices [0, old_vertex_count) are the parent's own
+  Index old_vertex_count = 0;      ///< child vertices [0, old_vertex_count) are the parent's own
   std::vector<Index> split_edges;  ///< child vertex old_vertex_count + i splits parent edge split_edges[i]
   Index child_vertex_count() const { return old_vertex_count + static_cast<Index>(split_edges.size()); }
   bool is_new(Index child_vertex) const { return child_vertex >= old_vertex_count; }
