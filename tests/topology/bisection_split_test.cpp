@@ -133,15 +133,25 @@ TEST(QuasiFourEightExamples, RegularHexagonKeepsValence6) {
   EXPECT_EQ(rims, 0);
 }
 
-// Figure 7: radial noise in [-0.1, 0.1] and [-0.3, 0.3] (radius 1).
+// Figure 7: radial noise in [-0.1, 0.1] and [-0.3, 0.3] (radius 1). The
+// paper's two draws give the centre valence 8 and the same topology. Over
+// 200 seeded draws (the same uniform values scaled by 0.1 and 0.3): the same
+// topology after one 4-8 step (two binary steps) in every draw, and valence
+// 8 in most (measured: 139 of 200; 6 and 10 in the others, 30 and 31).
 TEST(QuasiFourEightExamples, PerturbedHexagons) {
-  for (const std::uint32_t seed : {1u, 2u, 3u}) {
-    const PolygonMesh small = quasi(ngon_fan(6, 0.1, seed), 4);
-    const PolygonMesh large = quasi(ngon_fan(6, 0.3, seed), 4);
-    EXPECT_EQ(MeshTopology(small).valence(0), 8) << "seed " << seed;
-    EXPECT_EQ(MeshTopology(large).valence(0), 8) << "seed " << seed;
+  int valence8 = 0;
+  const int draws = 200;
+  for (std::uint32_t seed = 1; seed <= draws; ++seed) {
+    const PolygonMesh small = quasi(ngon_fan(6, 0.1, seed), 2);
+    const PolygonMesh large = quasi(ngon_fan(6, 0.3, seed), 2);
+    const Index valence = MeshTopology(small).valence(0);
+    EXPECT_EQ(MeshTopology(large).valence(0), valence) << "seed " << seed;
     EXPECT_EQ(edge_set(small), edge_set(large)) << "seed " << seed;
+    valence8 += valence == 8;
   }
+  EXPECT_GT(valence8, draws / 2);
+  // Unlike the regular hexagon, whose exact ties keep valence 6.
+  EXPECT_EQ(MeshTopology(quasi(ngon_fan(6, 0.1, 1), 4)).valence(0), 8);
 }
 
 // Figure 6: the hexagon with its horizontal interior edges in ratio 1:2.
