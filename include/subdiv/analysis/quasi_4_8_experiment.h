@@ -1,0 +1,53 @@
+#pragma once
+// The quasi 4-8 scheme's "numerical experiments on the eigenstructure"
+// (Velho, section 5.2). Its split depends on the geometry, so there is no
+// canonical ring mesh: the experiment refines a planar control mesh (the
+// n-regular neighbourhood of section 4.1, or any mesh and vertex) for
+// `warmup` binary steps, records the two next steps (one 4-8 step, the
+// scheme's period) as stencils, and reads the local subdivision matrix off
+// them around the centre:
+//   - the r-ring of the centre at both levels is numbered canonically by a
+//     breadth-first walk over the counter-clockwise rings, from a reference
+//     edge followed through both steps (the centre's half of it when it
+//     splits), each later vertex's ring from the edge to its parent;
+//   - it is usable when both numbered neighbourhoods have the same
+//     combinatorics (valences and adjacency inside the neighbourhood) and
+//     every row of the finer one has its weights inside the coarser one
+//     (invariance); the smallest such r is taken.
+// The matrix holds for this geometry only (another one may split otherwise),
+// which is what "quasi-stationary" means; the spectrum's eigenvalue part of
+// Reif's criterion is checked, the characteristic map is not, so the
+// experiment can refute C1 but not prove it.
+
+#include <Eigen/Core>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "subdiv/analysis/spectrum.h"
+#include "subdiv/mesh/polygon_mesh.h"
+
+namespace subdiv {
+
+struct Quasi48Experiment {
+  int warmup = 0;          ///< binary steps before the matrix
+  int centre_valence = 0;  ///< at level `warmup`
+  int rings = 0;           ///< of the invariant neighbourhood; 0: none found
+  int size = 0;            ///< its vertices
+  Eigen::MatrixXd S;       ///< two binary steps, neighbourhood to neighbourhood
+  Spectrum spectrum;
+  std::vector<std::complex<double>> leading;  ///< lambda_0 .. lambda_4
+  /// lambda_0 = 1 simple, lambda_1 = lambda_2 real, 1 > lambda_1 > |lambda_3|.
+  bool eigenvalue_condition = false;
+  std::string note;  ///< why no matrix, or which condition fails
+};
+
+/// The experiment at vertex `centre` of a triangle mesh (quasi-4-8's
+/// standard options, boundary fixed). rings are tried from 1 to max_rings.
+Quasi48Experiment quasi_4_8_experiment(const PolygonMesh& control, Index centre, int warmup, int max_rings = 6);
+
+/// The same on the regular n-gon of radius 1 triangulated around its
+/// centre (section 4.1's n-regular neighbourhood).
+Quasi48Experiment quasi_4_8_ngon_experiment(int n, int warmup, int max_rings = 6);
+
+}  // namespace subdiv
