@@ -6,6 +6,7 @@
 #include <cmath>
 #include <deque>
 #include <numbers>
+#include <optional>
 
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
@@ -87,9 +88,74 @@ bool number(const MeshTopology& t, Index centre, Index first, int rings, Neighbo
   return true;
 }
 
+// The piecewise-linear characteristic map (quasi_4_8_experiment.h): the
+// subdominant eigenvectors on the coarse neighbourhood, refined `steps` 4-8
+// steps by the stencils recorded on the mesh's own geometry; only child
+// vertices whose rows lie inside the neighbourhood are known.
+bool check_characteristic_map(const PolygonMesh& coarse, const std::vector<Index>& labels, const Eigen::MatrixXd& S,
+                              Quasi48Experiment& x, int steps) {
+  const std::optional<SubdominantPair> pair = subdominant_eigenvectors(S);
+  if (!pair || std::abs(pair->lambda1 - x.leading[1]) > 1e-9 || std::abs(pair->lambda2 - x.leading[2]) > 1e-9)
+    return false;
+  std::vector<char> inside(static_cast<std::size_t>(coarse.vertex_count()), 0);
+  std::vector<Vec3> data(static_cast<std::size_t>(coarse.vertex_count()));
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    inside[static_cast<std::size_t>(labels[i])] = 1;
+    data[static_cast<std::size_t>(labels[i])] = {pair->vectors[0](static_cast<Eigen::Index>(i)),
+                                                 pair->vectors[1](static_cast<Eigen::Index>(i)), 0.0};
+  }
+  RefineOptions o;
+  o.levels = 2 * steps;
+  PolygonMesh fine;
+  const std::vector<StencilTable> tables = refine_stencils(coarse, quasi_4_8_scheme(), o, &fine);
+  const StencilTable total = compose(tables);
+  std::vector<Vec3> image(static_cast<std::size_t>(total.row_count()));
+  total.apply(data, image);
+  std::vector<char> known(image.size(), 1);
+  for (Index r = 0; r < total.row_count(); ++r) {
+    const auto vs = total.row_vertices(r);
+    const auto ws = total.row_weights(r);
+    for (std::size_t j = 0; j < vs.size(); ++j)
+      if (ws[j] != 0.0 && !inside[static_cast<std::size_t>(vs[j])]) known[static_cast<std::size_t>(r)] = 0;
+  }
+  double scale = 0.0;
+  for (std::size_t v = 0; v < image.size(); ++v)
+    if (known[v]) scale = std::max(scale, norm(image[v]));
+  int positive = 0, negative = 0, degenerate = 0;
+  for (Index f = 0; f < fine.face_count(); ++f) {
+    const auto vs = fine.face(f);
+    if (!known[static_cast<std::size_t>(vs[0])] || !known[static_cast<std::size_t>(vs[1])] ||
+        !known[static_cast<std::size_t>(vs[2])])
+      continue;
+    const Vec3 a = image[static_cast<std::size_t>(vs[0])];
+    const double area = cross(image[static_cast<std::size_t>(vs[1])] - a, image[static_cast<std::size_t>(vs[2])] - a).z;
+    if (std::abs(area) <= 1e-12 * scale * scale)
+      ++degenerate;
+    else
+      (area > 0 ? positive : negative) += 1;
+  }
+  x.charmap_faces = positive + negative + degenerate;
+  x.charmap_flipped = std::min(positive, negative) + degenerate;
+  // The winding of the centre's ring around the centre's image.
+  const MeshTopology t(fine);
+  const Index centre = labels.front();
+  const Vec3 c = image[static_cast<std::size_t>(centre)];
+  double turn = 0.0;
+  const auto ring = t.vertex_edges(centre);
+  for (std::size_t j = 0; j < ring.size(); ++j) {
+    const Vec3 p = image[static_cast<std::size_t>(t.other_vertex(ring[j], centre))] - c;
+    const Vec3 q = image[static_cast<std::size_t>(t.other_vertex(ring[(j + 1) % ring.size()], centre))] - c;
+    turn += std::atan2(p.x * q.y - p.y * q.x, p.x * q.x + p.y * q.y);
+  }
+  x.charmap_winding = static_cast<int>(std::lround(turn / (2.0 * std::numbers::pi)));
+  x.charmap_regular = x.charmap_faces > 0 && x.charmap_flipped == 0 && std::abs(x.charmap_winding) == 1;
+  return true;
+}
+
 }  // namespace
 
-Quasi48Experiment quasi_4_8_experiment(const PolygonMesh& control, Index centre, int warmup, int max_rings) {
+Quasi48Experiment quasi_4_8_experiment(const PolygonMesh& control, Index centre, int warmup, int max_rings,
+                                       int charmap_steps) {
   if (warmup < 0) throw InvalidInputError("quasi 4-8 experiment: warm-up steps must be >= 0");
   if (centre < 0 || centre >= control.vertex_count())
     throw InvalidInputError("quasi 4-8 experiment: vertex " + std::to_string(centre) + " is not in the mesh");
@@ -108,39 +174,49 @@ Quasi48Experiment quasi_4_8_experiment(const PolygonMesh& control, Index centre,
   if (ct.vertex_edges(centre).empty()) throw InvalidInputError("quasi 4-8 experiment: the centre has no edges");
   const Index first = ct.other_vertex(ct.vertex_edges(centre)[0], centre);
   const Index first_fine = follow(mid, centre, follow(coarse, centre, first));
-  for (int r = 1; r <= max_rings; ++r) {
+  // The matrix on the r-ring, when both levels' r-rings match and the
+  // finer one's rows stay inside the coarser one; `why` says otherwise.
+  struct Local {
+    Eigen::MatrixXd S;
+    std::vector<Index> coarse;  // by label
+  };
+  const auto local = [&](int r, std::string& why) -> std::optional<Local> {
     Neighbourhood a, b;
     if (!number(ct, centre, first, r, a) || !number(ft, centre, first_fine, r, b)) {
-      x.note = "the " + std::to_string(r) + "-ring reaches the boundary or an unordered ring";
-      break;
+      why = "the " + std::to_string(r) + "-ring reaches the boundary or an unordered ring";
+      return std::nullopt;
     }
     if (a.vertices.size() != b.vertices.size() || a.adjacency != b.adjacency) {
-      x.note = "the " + std::to_string(r) + "-rings one 4-8 step apart differ in topology";
-      continue;
+      why = "the " + std::to_string(r) + "-rings one 4-8 step apart differ in topology";
+      return std::nullopt;
     }
-    const int m = static_cast<int>(a.vertices.size());
-    Eigen::MatrixXd S = Eigen::MatrixXd::Zero(m, m);
-    bool invariant = true;
-    for (int i = 0; i < m && invariant; ++i) {
+    const auto m = static_cast<Eigen::Index>(a.vertices.size());
+    Local l{Eigen::MatrixXd::Zero(m, m), a.vertices};
+    for (Eigen::Index i = 0; i < m; ++i) {
       const Index row = b.vertices[static_cast<std::size_t>(i)];
       const auto vs = two.row_vertices(row);
       const auto ws = two.row_weights(row);
       for (std::size_t j = 0; j < vs.size(); ++j) {
         const int col = a.label[static_cast<std::size_t>(vs[j])];
-        if (col < 0) {
-          if (ws[j] != 0.0) invariant = false;
-          continue;
+        if (col >= 0)
+          l.S(i, col) += ws[j];
+        else if (ws[j] != 0.0) {
+          why = "the " + std::to_string(r) + "-ring is not invariant";
+          return std::nullopt;
         }
-        S(i, col) += ws[j];
       }
     }
-    if (!invariant) {
-      x.note = "the " + std::to_string(r) + "-ring is not invariant";
+    return l;
+  };
+  for (int r = 1; r <= max_rings; ++r) {
+    const std::optional<Local> l = local(r, x.note);
+    if (!l) {
+      if (x.note.find("boundary") != std::string::npos) break;
       continue;
     }
     x.rings = r;
-    x.size = m;
-    x.S = S;
+    x.size = static_cast<int>(l->coarse.size());
+    x.S = l->S;
     x.note.clear();
     break;
   }
@@ -165,10 +241,20 @@ Quasi48Experiment quasi_4_8_experiment(const PolygonMesh& control, Index centre,
   } else {
     x.eigenvalue_condition = true;
   }
+  if (x.eigenvalue_condition && charmap_steps > 0) {
+    // The map is refined from a wider neighbourhood (three more rings), so
+    // that the refined faces cover the r-ring's region, not a smaller copy.
+    std::string why;
+    const std::optional<Local> wide = local(x.rings + 3, why);
+    if (!wide)
+      x.note = "no characteristic map: " + why;
+    else if (!check_characteristic_map(coarse, wide->coarse, wide->S, x, charmap_steps))
+      x.note = "no characteristic map: the wider matrix's subdominant pair is not the same";
+  }
   return x;
 }
 
-Quasi48Experiment quasi_4_8_ngon_experiment(int n, int warmup, int max_rings) {
+Quasi48Experiment quasi_4_8_ngon_experiment(int n, int warmup, int max_rings, int charmap_steps) {
   if (n < 3) throw InvalidInputError("quasi 4-8 experiment: n must be >= 3, not " + std::to_string(n));
   std::vector<Vec3> p{{0, 0, 0}};
   for (int i = 0; i < n; ++i) {
@@ -177,7 +263,7 @@ Quasi48Experiment quasi_4_8_ngon_experiment(int n, int warmup, int max_rings) {
   }
   std::vector<std::vector<Index>> faces;
   for (int i = 0; i < n; ++i) faces.push_back({0, i + 1, (i + 1) % n + 1});
-  return quasi_4_8_experiment(make_mesh(std::move(p), faces), 0, warmup, max_rings);
+  return quasi_4_8_experiment(make_mesh(std::move(p), faces), 0, warmup, max_rings, charmap_steps);
 }
 
 }  // namespace subdiv

@@ -22,6 +22,7 @@ TEST(Quasi48Experiment, RegularGridHasTheDyadicSpectrum) {
     const double expected[5] = {1.0, 0.5, 0.5, 0.25, 0.25};
     for (int i = 0; i < 5; ++i) EXPECT_NEAR(std::abs(x.leading[static_cast<std::size_t>(i)]), expected[i], 1e-9);
     EXPECT_TRUE(x.eigenvalue_condition);
+    EXPECT_TRUE(x.charmap_regular) << x.charmap_flipped << " of " << x.charmap_faces << " faces flipped";
     for (int r = 0; r < x.S.rows(); ++r) EXPECT_NEAR(x.S.row(r).sum(), 1.0, 1e-12);
   }
 }
@@ -47,6 +48,25 @@ TEST(Quasi48Experiment, NRegularNeighbourhoods) {
   EXPECT_LT(hexagon.leading[1].real(), 0.41);
   EXPECT_NEAR(std::abs(hexagon.leading[3]), 0.25, 1e-9);
   for (const int n : {3, 4, 5, 6, 8, 10, 12}) EXPECT_TRUE(quasi_4_8_ngon_experiment(n, 6).eigenvalue_condition) << n;
+}
+
+// The piecewise-linear characteristic map, refined two more 4-8 steps from a
+// neighbourhood three rings wider: regular at valences 6, 8 and 10 (eight
+// warm-up steps; after six the wider neighbourhood of n = 3 still reaches
+// the n-gon's boundary, which the experiment says).
+TEST(Quasi48Experiment, CharacteristicMapApproximation) {
+  for (const int n : {3, 4, 5}) {
+    const Quasi48Experiment x = quasi_4_8_ngon_experiment(n, 8);
+    ASSERT_TRUE(x.eigenvalue_condition) << n << ": " << x.note;
+    EXPECT_GT(x.charmap_faces, 1000) << n;
+    EXPECT_EQ(x.charmap_flipped, 0) << n;
+    EXPECT_EQ(std::abs(x.charmap_winding), 1) << n;
+    EXPECT_TRUE(x.charmap_regular) << n;
+  }
+  const Quasi48Experiment early = quasi_4_8_ngon_experiment(3, 6);
+  EXPECT_TRUE(early.eigenvalue_condition);
+  EXPECT_EQ(early.charmap_faces, 0);
+  EXPECT_NE(early.note.find("no characteristic map"), std::string::npos) << early.note;
 }
 
 TEST(Quasi48Experiment, SaysWhenThereIsNoMatrix) {

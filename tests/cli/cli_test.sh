@@ -442,7 +442,8 @@ run refine-full-steps-loop 1 refine "$meshes/tetrahedron.obj" -s loop --full-ste
 run limit-q48 1 limit "$meshes/tetrahedron.obj" -s quasi-4-8 -o "$work/x.obj" && stderr_one_line limit-q48
 
 run analyze-q48 0 analyze -s quasi-4-8 -k 3..6 &&
-  grep -qE "^3 +6 +3 +37 +0\.405113 +0\.405113 +0\.250000 .*condition holds" "$work/out" && pass || fail "analyze quasi-4-8: n=3 row"
+  grep -qE "^3 +6 +3 +37 +0\.405113 +0\.405113 +0\.250000 .*Reif holds +regular: 1350 faces alike, winds once" "$work/out" &&
+  pass || fail "analyze quasi-4-8: n=3 row"
 run analyze-q48-json 1 analyze -s quasi-4-8 --json && stderr_one_line analyze-q48-json
 run analyze-warmup-loop 1 analyze -s loop --warmup 2 && stderr_one_line analyze-warmup-loop
 

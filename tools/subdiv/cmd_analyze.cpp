@@ -152,7 +152,7 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
           "--json, --boundary-rules, --flatness or plots");
     Configuration interior;
     const auto [first, last] = parse_k_range(opt.k.empty() ? "3..12" : opt.k, interior);
-    return run_quasi_4_8_analysis(first, last, opt.warmup.value_or(6));
+    return run_quasi_4_8_analysis(first, last, opt.warmup.value_or(8));
   }
   if (opt.warmup) throw InvalidInputError("--warmup applies to quasi-4-8");
 
@@ -266,7 +266,7 @@ Command add_analyze_command(CLI::App& app) {
                   "Flatness parameter s at concave corners (piecewise-smooth; default 1 - (1/4)/lambda_3, 0 = off)")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
-  cmd->add_option("--warmup", opt->warmup, "quasi-4-8: binary steps before the matrix is read (default 6)")
+  cmd->add_option("--warmup", opt->warmup, "quasi-4-8: binary steps before the matrix is read (default 8)")
       ->check(CLI::Range(0, 10));
   cmd->add_flag("--json", opt->json, "Print JSON (spectra, limit and tangent masks, layout) instead of the table");
   cmd->add_option("--plot-spectrum", opt->plot_spectrum, "Plot eigenvalue magnitudes against k (.svg or .png)")
@@ -287,7 +287,7 @@ Command add_analyze_command(CLI::App& app) {
       "  subdiv analyze -s catmull-clark --boundary -k 1..5 --json\n"
       "  subdiv analyze -s loop --boundary -k 3..9 --boundary-rules piecewise-smooth\n"
       "  subdiv analyze -s cubic-bspline    (curve schemes: cubic-bspline, chaikin, four-point)\n"
-      "  subdiv analyze -s quasi-4-8 -k 3..12 --warmup 6   (n-regular neighbourhoods)\n"
+      "  subdiv analyze -s quasi-4-8 -k 3..12 --warmup 8   (n-regular neighbourhoods)\n"
       "  subdiv analyze -s catmull-clark --plot-spectrum /tmp/cc.svg --plot-charmap 5 /tmp/cc5.png");
   return [opt, charmap] {
     opt->plot_charmap_given = charmap->count() > 0;

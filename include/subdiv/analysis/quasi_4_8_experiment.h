@@ -15,9 +15,14 @@
 //     every row of the finer one has its weights inside the coarser one
 //     (invariance); the smallest such r is taken.
 // The matrix holds for this geometry only (another one may split otherwise),
-// which is what "quasi-stationary" means; the spectrum's eigenvalue part of
-// Reif's criterion is checked, the characteristic map is not, so the
-// experiment can refute C1 but not prove it.
+// which is what "quasi-stationary" means. The spectrum's eigenvalue part of
+// Reif's criterion is checked exactly; the characteristic map only through
+// a piecewise-linear approximation: the subdominant eigenvectors placed on
+// the coarse neighbourhood are refined `charmap_steps` more 4-8 steps with
+// the recorded stencils, and the faces whose three vertices depend on the
+// neighbourhood alone must all be oriented alike, with the centre's ring
+// winding once around the centre's image. A failure refutes C1 (at this
+// resolution); success is evidence, not a proof.
 
 #include <Eigen/Core>
 #include <complex>
@@ -40,14 +45,22 @@ struct Quasi48Experiment {
   /// lambda_0 = 1 simple, lambda_1 = lambda_2 real, 1 > lambda_1 > |lambda_3|.
   bool eigenvalue_condition = false;
   std::string note;  ///< why no matrix, or which condition fails
+  /// The piecewise-linear characteristic map (when the eigenvalue
+  /// condition holds): faces checked, faces against the majority
+  /// orientation or degenerate, the centre ring's winding number.
+  int charmap_faces = 0;
+  int charmap_flipped = 0;
+  int charmap_winding = 0;
+  bool charmap_regular = false;  ///< charmap_faces > 0, none flipped, winding +-1
 };
 
 /// The experiment at vertex `centre` of a triangle mesh (quasi-4-8's
 /// standard options, boundary fixed). rings are tried from 1 to max_rings.
-Quasi48Experiment quasi_4_8_experiment(const PolygonMesh& control, Index centre, int warmup, int max_rings = 6);
+Quasi48Experiment quasi_4_8_experiment(const PolygonMesh& control, Index centre, int warmup, int max_rings = 6,
+                                       int charmap_steps = 2);
 
 /// The same on the regular n-gon of radius 1 triangulated around its
 /// centre (section 4.1's n-regular neighbourhood).
-Quasi48Experiment quasi_4_8_ngon_experiment(int n, int warmup, int max_rings = 6);
+Quasi48Experiment quasi_4_8_ngon_experiment(int n, int warmup, int max_rings = 6, int charmap_steps = 2);
 
 }  // namespace subdiv
