@@ -31,22 +31,21 @@ void check_quasi_4_8(const PolygonMesh& mesh, const Scheme& scheme, const Refine
   check_refinable(mesh, scheme, options, lines);
 }
 
-// One level: the bisected child, its topology and what smoothing keeps.
+// One level: the bisected child, its topology (the next level's parent
+// topology) and what smoothing keeps.
 struct Step {
-  Step(const PolygonMesh& parent, const RefineOptions& options)
-      : parent_topology(parent),
+  Step(const PolygonMesh& parent, MeshTopology topology, const RefineOptions& options)
+      : parent_topology(std::move(topology)),
         map(bisection_split(parent, parent_topology, child)),
         child_topology(child),
-        fixed(quasi_4_8_fixed_vertices(child, child_topology, options.quasi_4_8_boundary)),
-        boundary(options.quasi_4_8_boundary) {}
-  Quasi48Level view() const { return {child_topology, map, fixed, boundary, parent_topology}; }
+        fixed(quasi_4_8_fixed_vertices(child, child_topology, options.quasi_4_8_boundary)) {}
+  Quasi48Level view() const { return {child_topology, map, fixed, parent_topology}; }
 
   MeshTopology parent_topology;
   PolygonMesh child;
   BisectionMap map;
   MeshTopology child_topology;
   std::vector<char> fixed;
-  Quasi48Boundary boundary;
 };
 
 // Runs mask(level, v, builder) then fn(v, builder) for v in [begin, end).
@@ -117,8 +116,9 @@ PolygonMesh refine_quasi_4_8(const PolygonMesh& mesh, const Scheme& scheme, cons
                              const SourceLines* lines) {
   check_quasi_4_8(mesh, scheme, options, lines);
   PolygonMesh current = mesh;
+  MeshTopology topology(current);
   for (int l = 0; l < options.levels; ++l) {
-    Step s(current, options);
+    Step s(current, std::move(topology), options);
     const Quasi48Level level = s.view();
     std::vector<double> xyz;
     xyz.reserve(3 * s.child.positions.size());
@@ -134,6 +134,7 @@ PolygonMesh refine_quasi_4_8(const PolygonMesh& mesh, const Scheme& scheme, cons
       s.child.vertex_channels.push_back(std::move(out));
     }
     current = std::move(s.child);
+    topology = std::move(s.child_topology);
     if (options.on_level) options.on_level(l + 1, current);
   }
   return current;
@@ -145,11 +146,13 @@ std::vector<StencilTable> refine_quasi_4_8_stencils(const PolygonMesh& mesh, con
   std::vector<StencilTable> tables;
   PolygonMesh current = mesh;
   current.vertex_channels.clear();
+  MeshTopology topology(current);
   for (int l = 0; l < options.levels; ++l) {
-    Step s(current, options);
+    Step s(current, std::move(topology), options);
     tables.push_back(record(s.view()));
     tables.back().apply(current.positions, s.child.positions);  // the next split reads them
     current = std::move(s.child);
+    topology = std::move(s.child_topology);
     if (options.on_level) options.on_level(l + 1, current);
   }
   if (final_level) *final_level = std::move(current);

@@ -46,7 +46,6 @@ struct Quasi48Level {
   /// edge, a fixed boundary vertex). A fixed split point stays at its
   /// edge's midpoint; a fixed old vertex at its position.
   std::span<const char> fixed;
-  Quasi48Boundary boundary = Quasi48Boundary::fixed;
   /// The parent edges' ends, for a fixed split point's midpoint.
   const MeshTopology& parent;
 };
