@@ -104,6 +104,31 @@ TEST(BisectionSplit, RefusesPolygons) {
   EXPECT_THROW(bisection_split(quad, MeshTopology(quad), child), TopologyError);
 }
 
+// Face-varying values: corners keep theirs, a split point takes the mean of
+// its edge's two corner values in each bisected face (here the values are
+// the corners' positions, so they must equal the unsmoothed child positions).
+TEST(BisectionSplit, FaceVaryingValuesSplitLinearly) {
+  PolygonMesh mesh = ngon_fan(5, 0.2, 3);
+  FaceVaryingChannel uv{"uv", 2, {}, {}};
+  for (Index c = 0; c < mesh.corner_count(); ++c) {
+    const Vec3 p = mesh.positions[mesh.face_indices[c]];
+    uv.values.insert(uv.values.end(), {p.x, p.y});
+    uv.indices.push_back(c);  // one value per corner: seams everywhere
+  }
+  mesh.face_varying_channels.push_back(uv);
+  const MeshTopology t(mesh);
+  PolygonMesh child;
+  bisection_split(mesh, t, child);
+  ASSERT_EQ(child.face_varying_channels.size(), 1u);
+  const FaceVaryingChannel& out = child.face_varying_channels[0];
+  ASSERT_EQ(out.indices.size(), child.face_indices.size());
+  for (std::size_t c = 0; c < out.indices.size(); ++c) {
+    const Vec3 p = child.positions[child.face_indices[c]];  // midpoints before smoothing
+    EXPECT_NEAR(out.values[2 * out.indices[c]], p.x, 1e-15) << "corner " << c;
+    EXPECT_NEAR(out.values[2 * out.indices[c] + 1], p.y, 1e-15) << "corner " << c;
+  }
+}
+
 // Section 4.1, Figure 5: for n = 3, 4, 5 the centre gets valence 2n and stays
 // there; every other interior vertex follows the regular 4-8 pattern.
 TEST(QuasiFourEightExamples, RegularPolygonsCentreValence2n) {
@@ -192,6 +217,27 @@ TEST(QuasiFourEightExamples, LargeEvenRadialOddAsymmetric) {
     const MeshTopology refined(quasi(mesh, 1));
     EXPECT_EQ(refined.valence(0), n + n % 2) << "n = " << n;
   }
+}
+
+// Section 2.2: on a uniform 4-8 grid the longest-edge bisection is the
+// interleaved 4-8 refinement: two binary steps make the grid of half the
+// spacing (a 4-8 step), the first splitting exactly the diagonals.
+TEST(QuasiFourEightExamples, TwoBinaryStepsAreOneFourEightStep) {
+  const PolygonMesh grid = test::four_eight_grid(4);
+  const MeshTopology t(grid);
+  const std::vector<char> split = bisection_split_edges(t, grid.positions);
+  for (Index e = 0; e < t.edge_count(); ++e) {
+    const auto [a, b] = t.edge_vertices(e);
+    const Vec3 d = grid.positions[b] - grid.positions[a];
+    EXPECT_EQ(split[e] != 0, d.x != 0.0 && d.y != 0.0) << "edge " << e;  // diagonals only
+  }
+  const MeshTopology once(quasi(grid, 1));
+  EXPECT_EQ(once.vertex_count(), 25 + 16);  // a square centre per square
+  const PolygonMesh twice = quasi(grid, 2);
+  const MeshTopology t2(twice);
+  EXPECT_EQ(t2.vertex_count(), 81);
+  EXPECT_EQ(t2.face_count(), 4 * t.face_count());
+  EXPECT_TRUE(four_eight_irregular(t2).empty());
 }
 
 // Figure 9: a 4-8 regular torus stays free of extraordinary vertices.
