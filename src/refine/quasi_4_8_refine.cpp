@@ -75,16 +75,15 @@ void smooth_in_place(const Quasi48Level& level, double* values, std::size_t k) {
                       out[c] += m.weights()[j] * values[static_cast<std::size_t>(m.vertices()[j]) * k + c];
                 });
   for_each_mask(level, 0, old_count, quasi_4_8_old_vertex_mask, [&](Index v, const MaskBuilder& m) {
-    double sum[16] = {};
-    std::vector<double> wide(k > 16 ? k : 0, 0.0);
-    double* acc = k > 16 ? wide.data() : sum;
+    thread_local std::vector<double> acc;  // v's new value, kept apart until complete
+    acc.assign(k, 0.0);
     for (std::size_t j = 0; j < m.vertices().size(); ++j)
       for (std::size_t c = 0; c < k; ++c)
         acc[c] += m.weights()[j] * values[static_cast<std::size_t>(m.vertices()[j]) * k + c];
     for (std::size_t j = 0; j < m.face_points().size(); ++j)
       for (std::size_t c = 0; c < k; ++c)
         acc[c] += m.face_point_weights()[j] * values[static_cast<std::size_t>(old_count + m.face_points()[j]) * k + c];
-    std::copy(acc, acc + k, values + static_cast<std::size_t>(v) * k);
+    std::copy(acc.begin(), acc.end(), values + static_cast<std::size_t>(v) * k);
   });
 }
 
