@@ -515,6 +515,7 @@ int levels_to_resolve(const PolygonMesh& mesh, const Scheme& scheme, int cap) {
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options) {
   if (options.isolation_levels < 0 || options.max_resolve_levels < 0)
     throw InvalidInputError("limit: refinement levels must be >= 0");
+  if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no limit positions for composite schemes yet (refine and analyze cover them)");
   if (scheme.split == SplitRule::dual) return dual_limit_positions(mesh, scheme, options);
   if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) + ": no limit positions for the " + to_string(scheme.split) +

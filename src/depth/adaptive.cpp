@@ -296,6 +296,7 @@ AdaptiveResult Hierarchy::result() const {
 AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
                                const AdaptiveOptions& options) {
   if (!(eps > 0.0)) throw InvalidInputError("accuracy must be a positive number");
+  if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": adaptive refinement does not cover composite schemes (their steps have no per-face rules)");
   if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) + ": adaptive refinement covers the quad and triangle splits");
   return Hierarchy(mesh, scheme, eps, options).result();

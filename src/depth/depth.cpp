@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/depth/depth_bound.h"
+#include "subdiv/depth/dual_face_bound.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
@@ -135,47 +137,89 @@ bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& opti
   return std::abs(mask[0] - 1.0) < 1e-9 && mask.tail(mask.size() - 1).cwiseAbs().maxCoeff() < 1e-9;
 }
 
-// Doo-Sabin (docs/design.md, "Depth"): the paper's Theorem 5 on the mesh
-// after the first step, where every vertex has valence 4, plus a term for
-// the extraordinary faces (!= 4 sides), which the grid argument does not
-// reach: there distances contract by |lambda_1| of that face size.
+// Doo-Sabin (docs/design.md, "Depth"): the paper's Theorem 5 from the level
+// at which every extraordinary face (!= 4 sides) has the canonical two-ring
+// neighbourhood, plus a term for those faces from powers of their local
+// subdivision matrix (subdiv/depth/dual_face_bound.h).
+constexpr int kMaxDualStart = 6;
+constexpr std::int64_t kMaxDualStartFaces = std::int64_t{1} << 22;
+
 DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
   if (scheme.name != "doo-sabin")
     throw InvalidInputError(std::string(scheme.name) + ": no depth bound for this dual-split scheme");
-  const PolygonMesh first = refined(mesh, scheme, options, 1);
-  DepthBound bound = doo_sabin_bound(max_second_difference(first));
-  std::set<int> sizes;
-  for (Index f = 0; f < first.face_count(); ++f)
-    if (first.face_size(f) != 4) sizes.insert(first.face_size(f));
-  if (sizes.empty()) return bound;
-  double rate = 0.0;
-  int worst = 0;
-  for (const int k : sizes) {
-    AnalysisOptions analysis;
-    analysis.characteristic_map = false;
-    analysis.rules = options.refine;
-    const ConfigurationAnalysis a = analyze(scheme, {Configuration::Kind::interior, k, CornerType::convex}, analysis);
-    if (a.leading.size() < 2)
-      throw InvalidInputError(std::string(scheme.name) + ": no depth bound: the analysis of the face of " +
-                              std::to_string(k) + " sides found no subdominant eigenvalue");
-    if (std::abs(a.leading[1]) > rate || worst == 0) {
-      rate = std::abs(a.leading[1]);
-      worst = k;
+  PolygonMesh level = refined(mesh, scheme, options, 1);
+  std::map<int, DualFaceOperator> operators;
+  const auto operator_at = [&](int k) -> const DualFaceOperator& {
+    auto it = operators.find(k);
+    if (it == operators.end()) it = operators.emplace(k, dual_face_operator(scheme, k, options.refine)).first;
+    return it->second;
+  };
+  for (int start = 1;; ++start) {
+    const MeshTopology t(level);
+    std::vector<Index> extraordinary;
+    for (Index f = 0; f < t.face_count(); ++f)
+      if (t.face_size(f) != 4) extraordinary.push_back(f);
+    if (extraordinary.empty()) return doo_sabin_bound(max_second_difference(level), start);
+    // A face at the boundary stays there: its neighbourhood never becomes
+    // the interior one the operator is computed for.
+    for (const Index f : extraordinary)
+      for (const Index v : t.face_vertices(f))
+        if (t.vertex_kind(v) != VertexKind::interior)
+          throw InvalidInputError(std::string(scheme.name) + ": no depth bound yet at a face of " +
+                                  std::to_string(t.face_size(f)) + " sides on the boundary (face " +
+                                  std::to_string(f) + " after " + std::to_string(start) +
+                                  " steps): the bound covers extraordinary faces inside the mesh only");
+    std::vector<Eigen::MatrixXd> neighbourhoods;
+    bool canonical = true;
+    for (const Index f : extraordinary) {
+      std::optional<Eigen::MatrixXd> around =
+          canonical_neighbourhood(operator_at(t.face_size(f)), t, level.positions, f);
+      if (!around) {
+        canonical = false;
+        break;
+      }
+      neighbourhoods.push_back(std::move(*around));
     }
+    if (!canonical) {
+      if (start == kMaxDualStart || 4 * level.corner_count() > kMaxDualStartFaces)
+        throw InvalidInputError(std::string(scheme.name) + ": no depth bound: after " + std::to_string(start) +
+                                " steps extraordinary faces are still too close to each other for the bound");
+      RefineOptions one = options.refine;
+      one.levels = 1;
+      one.on_level = nullptr;
+      level = refine(level, scheme, one);
+      continue;
+    }
+    double amplitude = 0.0, rate = 0.0;
+    int worst = 0;
+    for (std::size_t i = 0; i < extraordinary.size(); ++i) {
+      const DualFaceOperator& op = operator_at(t.face_size(extraordinary[i]));
+      const double a = dual_face_amplitude(op, neighbourhoods[i]);
+      if (a > amplitude || worst == 0) {
+        amplitude = a;
+        worst = op.k;
+      }
+      rate = std::max(rate, op.rate);
+    }
+    const double second_difference = max_second_difference(level);
+    DepthBound bound = doo_sabin_bound(second_difference, start);
+    bound.source = "paper (regular) + local subdivision matrix (extraordinary)";
+    // Near the faces the regular term's second differences are bounded by
+    // the faces' own term, so the two together hold everywhere from `start`
+    // on (docs/design.md, "Depth").
+    bound.terms.push_back({"largest distance or second difference / 4 that the local subdivision matrix gives any "
+                           "later step near the extraordinary faces after " + std::to_string(start) +
+                               " steps, over |lambda_1|^steps (worst at a face of " + std::to_string(worst) +
+                               " sides), contracted by |lambda_1|",
+                           amplitude, rate});
+    return bound;
   }
-  // Not yet a bound everywhere: measured distances exceed this term by up to
-  // 78% on some meshes (docs/design.md, "Depth"); the output says so.
-  bound.source = "paper (regular) + analysis estimate (extraordinary)";
-  bound.terms.push_back({"largest vertex-to-limit distance after the first step, contracted by |lambda_1| at the "
-                         "extraordinary face of " + std::to_string(worst) +
-                             " sides (analysis; an estimate, not proven: exceeded by up to 78% on measured meshes)",
-                         limit_distances(first, scheme, limit_options(options)).max, rate});
-  return bound;
 }
 
 }  // namespace
 
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
+  if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no depth bound for composite schemes yet: it needs limit positions");
   if (scheme.split == SplitRule::dual) return dual_depth_bound(mesh, scheme, options);
   if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) + ": no depth bound for the " + to_string(scheme.split) +

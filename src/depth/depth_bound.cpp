@@ -66,12 +66,13 @@ DepthBound cheng_catmull_clark_bound(double max_second_difference, int start) {
             max_second_difference / 3.0, 0.25}}};
 }
 
-DepthBound doo_sabin_bound(double max_second_difference_after_first_step) {
+DepthBound doo_sabin_bound(double max_second_difference, int start) {
   return {"doo-sabin",
           "paper",
-          1,
-          {{"(1/4) x largest second difference after the first step, contracted by 1/4 (paper, Theorem 5)",
-            max_second_difference_after_first_step / 4.0, 0.25}}};
+          start,
+          {{"(1/4) x largest second difference after " + std::to_string(start) +
+                (start == 1 ? " step" : " steps") + ", contracted by 1/4 (paper, Theorem 5)",
+            max_second_difference / 4.0, 0.25}}};
 }
 
 }  // namespace subdiv

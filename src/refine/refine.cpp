@@ -110,6 +110,9 @@ struct Level {
   /// Concave corners whose one-ring `fn` modifies after the masks
   /// (piecewise-smooth rules).
   std::vector<detail::FlatnessSite> flatness;
+  /// The child's topology, when the level built it already (a composite
+  /// scheme's smoothing steps need their quad mesh's).
+  std::optional<MeshTopology> child_topology;
 };
 
 // One step: the child's faces and tags, then `fn` with the parent level and
@@ -132,6 +135,52 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const
   return level;
 }
 
+// One step's evaluation: `fn(view, step, source, level, first)` evaluates
+// or records the masks of `step` into `level`, reading values from
+// `source`; `first` is false for a composite scheme's later steps, whose
+// masks weight the previous step's vertices.
+//
+// One level of `scheme`: a single step, or a composite scheme's steps in
+// turn (Scheme::steps): R, a quad split of the level's parent; smoothing
+// steps, identity splits of R's quad mesh; A, a dual split of the level's
+// parent whose masks weight the quad mesh's vertices.
+template <typename Fn>
+Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, const Scheme& scheme,
+                   BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options, Fn&& fn) {
+  if (!scheme.steps)
+    return refine_step(parent, topology, scheme, boundary, method, options,
+                       [&](const ParentLevel& view, Level& level) { fn(view, scheme, parent, level, true); });
+  const std::vector<Scheme> steps = scheme.steps(scheme.parameters);
+  Level level;
+  std::optional<MeshTopology> quads;  // R's child's topology
+  PolygonMesh source;                 // the previous step's child
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const Scheme& step = steps[i];
+    const bool first = i == 0;
+    auto evaluate = [&](const PolygonMesh& values) {
+      return [&fn, &step, &values, first](const ParentLevel& view, Level& lv) { fn(view, step, values, lv, first); };
+    };
+    if (step.split == SplitRule::quad) {
+      level = refine_step(parent, topology, step, boundary, method, options, evaluate(parent));
+      if (i + 1 < steps.size()) {
+        quads = MeshTopology::from_quad_split(topology, level.child);
+        if (!quads) quads.emplace(level.child);
+      }
+    } else if (step.split == SplitRule::identity && quads) {
+      source = std::move(level.child);
+      level = refine_step(source, *quads, step, boundary, method, options, evaluate(source));
+      if (i + 1 == steps.size()) level.child_topology = std::move(quads);  // the same faces
+    } else if (step.split == SplitRule::dual && quads) {
+      source = std::move(level.child);
+      level = refine_step(parent, topology, step, boundary, method, options, evaluate(source));
+    } else {
+      throw InvalidInputError(std::string(scheme.name) + ": a composite scheme's steps are a quad split, then " +
+                              "identity splits, then at most one dual split");
+    }
+  }
+  return level;
+}
+
 // The levels one after the other, each parent's topology derived from its
 // own parent's where the split allows it (a manifold level), built from the
 // faces otherwise; `step` refines one level.
@@ -146,6 +195,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
     if (!topology) topology.emplace(current);
     Level level = step(current, *topology);
     if (l + 1 == options.levels) topology.reset();
+    else if (level.child_topology) topology = std::move(level.child_topology);
     else if (scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
     else if (scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
     else topology.reset();  // built from the child's faces
@@ -292,8 +342,16 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
   if (boundary_of(mesh, options) == BoundaryInterpolation::none)
     throw InvalidInputError("boundary interpolation 'none' is not supported; use edge-only or edge-and-corner");
   // quasi 4-8 reads tags its own way (quasi_4_8_refine.cpp).
-  if (!is_primal(scheme.split) && scheme.split != SplitRule::quasi_4_8)
+  if ((!is_primal(scheme.split) && scheme.split != SplitRule::quasi_4_8) || scheme.steps)
     check_no_sharp_features(mesh, scheme, options, lines);
+  if (scheme.steps) {
+    // The steps' own checks (degree, weights), and the split they make.
+    const std::vector<Scheme> steps = scheme.steps(scheme.parameters);
+    const SplitRule made = !steps.empty() && steps.back().split == SplitRule::dual ? SplitRule::dual : SplitRule::quad;
+    if (made != scheme.split)
+      throw InvalidInputError(std::string(scheme.name) + ": its steps make a " + to_string(made) +
+                              " but the scheme says " + to_string(scheme.split) + " (set the degree with set_degree)");
+  }
   const std::string path = lines ? lines->path : std::string();
   try {
     check_face_arrays(mesh);
@@ -354,10 +412,11 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   PolygonMesh result;
   run_with_threads(options.threads, [&] {
     result = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_step(parent, topology, scheme, boundary, method, options, [&](const ParentLevel& view, Level& level) {
-        evaluate_fast(parent, scheme, view, level);
-        detail::apply_flatness(level.flatness, level.child);
-      });
+      return refine_level(parent, topology, scheme, boundary, method, options,
+                          [&](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level, bool) {
+                            evaluate_fast(source, step, view, level);
+                            detail::apply_flatness(level.flatness, level.child);
+                          });
     });
   });
   return result;
@@ -372,10 +431,14 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
   std::vector<StencilTable> tables;
   run_with_threads(options.threads, [&] {
     PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      Level level = refine_step(parent, topology, scheme, boundary, method, options, [&](const ParentLevel& view, Level& lv) {
-        tables.push_back(record_stencils(view, scheme, lv.map, nullptr));
-        detail::apply_flatness(lv.flatness, tables.back());
-      });
+      Level level = refine_level(
+          parent, topology, scheme, boundary, method, options,
+          [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool first) {
+            // A composite scheme's later steps compose onto the level's table.
+            if (first) tables.push_back(record_stencils(view, step, lv.map, nullptr));
+            else tables.back() = record_stencils(view, step, lv.map, &tables.back());
+            detail::apply_flatness(lv.flatness, tables.back());
+          });
       if (final_level) tables.back().apply(parent.positions, level.child.positions);
       return level;
     });
@@ -395,10 +458,11 @@ StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme,
   std::optional<StencilTable> total;
   run_with_threads(options.threads, [&] {
     refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_step(parent, topology, scheme, boundary, method, options, [&](const ParentLevel& view, Level& lv) {
-        total = record_stencils(view, scheme, lv.map, total ? &*total : nullptr);
-        detail::apply_flatness(lv.flatness, *total);
-      });
+      return refine_level(parent, topology, scheme, boundary, method, options,
+                          [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool) {
+                            total = record_stencils(view, step, lv.map, total ? &*total : nullptr);
+                            detail::apply_flatness(lv.flatness, *total);
+                          });
     });
   });
   return total ? std::move(*total) : StencilTable::identity(mesh.vertex_count());

@@ -12,11 +12,14 @@ namespace subdiv {
 
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f) {
   if (rule == SplitRule::quad) return {parent.face_first_corner(f), parent.face_first_corner(f) + parent.face_size(f)};
-  if (rule == SplitRule::dual || rule == SplitRule::midedge) return {f, f + 1};
+  if (rule == SplitRule::dual || rule == SplitRule::midedge || rule == SplitRule::identity) return {f, f + 1};
   return {4 * f, 4 * f + 4};
 }
 
-double arity(SplitRule r) { return r == SplitRule::midedge || r == SplitRule::quasi_4_8 ? std::sqrt(2.0) : 2.0; }
+double arity(SplitRule r) {
+  if (r == SplitRule::identity) return 1.0;
+  return r == SplitRule::midedge || r == SplitRule::quasi_4_8 ? std::sqrt(2.0) : 2.0;
+}
 
 const char* to_string(SplitRule r) {
   switch (r) {
@@ -24,6 +27,7 @@ const char* to_string(SplitRule r) {
     case SplitRule::triangle: return "triangle split (TP, arity 2)";
     case SplitRule::dual: return "dual split (QD, arity 2)";
     case SplitRule::midedge: return "midedge split (QD, arity sqrt 2)";
+    case SplitRule::identity: return "identity (same faces)";
     case SplitRule::quasi_4_8: return "quasi 4-8 bisection (geometric, arity sqrt 2)";
   }
   return "?";
@@ -106,6 +110,7 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
   SplitMap map = rule == SplitRule::quad       ? detail::quad_split(topology, child)
                  : rule == SplitRule::triangle ? detail::triangle_split(topology, child)
                  : rule == SplitRule::dual     ? detail::dual_split(topology, child)
+                 : rule == SplitRule::identity ? detail::identity_split(topology, child)
                                                : detail::midedge_split(topology, child);
   detail::propagate_tags(parent, topology, map, child_end_sharpness, child);
   // Vertex channels are the masks' to fill; face-varying ones split here.
@@ -117,6 +122,7 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
     if (rule == SplitRule::quad) detail::quad_split_face_varying(topology, in, out);
     else if (rule == SplitRule::triangle) detail::triangle_split_face_varying(topology, in, out);
     else if (rule == SplitRule::dual) detail::dual_split_face_varying(topology, map, child, in, out);
+    else if (rule == SplitRule::identity) out = in;
     else detail::midedge_split_face_varying(topology, child, in, out);
   }
   return map;

@@ -12,6 +12,7 @@ SplitMap quad_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap triangle_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap dual_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap midedge_split(const MeshTopology& topology, PolygonMesh& child);
+SplitMap identity_split(const MeshTopology& topology, PolygonMesh& child);
 
 /// Face-varying values linear within each face, for the child's corners.
 void quad_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);

@@ -131,6 +131,41 @@ run refine-midedge-open 1 refine "$meshes/l_shape.obj" -s midedge -o "$work/x.ob
 run analyze-midedge 0 analyze -s midedge -k 3..6 && stdout_has analyze-midedge "period 2" &&
   stdout_has analyze-midedge "extraordinary face of k sides"
 grep -qE "^interior k=6 +24 +1 +0.750000 +0.750000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze midedge: k=6 row"
+# Generalized Catmull-Clark and midpoint schemes (Chen-Prautzsch).
+run refine-gcc 0 refine "$meshes/cube.obj" -s gcc -l 2 -o "$work/gcc.obj" --stats
+stdout_has refine-gcc "level 2: 98 vertices, 96 faces"
+run refine-gcc-cc 0 refine "$meshes/cube.obj" -s catmull-clark -l 2 -o "$work/cc.obj"
+paste <(grep '^v ' "$work/gcc.obj") <(grep '^v ' "$work/cc.obj") |
+  awk '{for (i = 2; i <= 4; ++i) { d = $i - $(i + 4); if (d < 0) d = -d; if (d > m) m = d } } END { exit !(NR == 98 && m < 1e-14) }' &&
+  pass || fail "refine gcc: not Catmull-Clark's vertices on the cube"
+run refine-gcc-5 0 refine "$meshes/cube.obj" -s gcc --degree 5 --alpha 0.2,0.3 --beta 0.5,0.4 -l 2 -o "$work/gcc5.obj" --stats
+stdout_has refine-gcc-5 "level 2: 98 vertices, 96 faces"
+run refine-midpoint-4 0 refine "$meshes/cube.obj" -s midpoint --degree 4 -l 2 -o "$work/m4.obj" --stats
+stdout_has refine-midpoint-4 "level 1: 24 vertices, 26 faces"
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 1\nv 2 1 0\nf 1 2 5 4\nf 2 3 6 5\n' >"$work/open.obj"
+run refine-midpoint-open 0 refine "$work/open.obj" -s midpoint --degree 3 -l 1 -o "$work/open3.obj"
+run refine-midpoint-tagged 1 refine "$meshes/l_shape.obj" -s midpoint -o "$work/x.obj" &&
+  stderr_one_line refine-midpoint-tagged && stderr_has refine-midpoint-tagged "midpoint has no corner rules"
+run refine-gcc-range 1 refine "$meshes/cube.obj" -s gcc --alpha 0.7 --beta 0.5 -o "$work/x.obj" &&
+  stderr_one_line refine-gcc-range && stderr_has refine-gcc-range "outside the paper's range"
+run refine-gcc-count 1 refine "$meshes/cube.obj" -s gcc --degree 7 --alpha 0.2,0.3 --beta 0.5,0.4 -o "$work/x.obj" &&
+  stderr_one_line refine-gcc-count && stderr_has refine-gcc-count "degree 7 has 3 smoothing operators"
+run refine-gcc-alpha-only 1 refine "$meshes/cube.obj" -s gcc --alpha 0.2 -o "$work/x.obj" && stderr_one_line refine-gcc-alpha-only
+run refine-degree-cc 1 refine "$meshes/cube.obj" -s catmull-clark --degree 5 -o "$work/x.obj" &&
+  stderr_has refine-degree-cc "--degree applies to gcc and midpoint"
+run refine-midpoint-alpha 1 refine "$meshes/cube.obj" -s midpoint --alpha 0.2 --beta 0.3 -o "$work/x.obj" &&
+  stderr_has refine-midpoint-alpha "give other weights to gcc"
+run analyze-gcc 0 analyze -s gcc -k 3..6 && stdout_has analyze-gcc "Chen-Prautzsch (n=3, B_1: alpha=1-3/m beta=2/m)"
+grep -qE "^interior k=3 +0.166667 +0.410097 +0.410097 +yes +yes +C1: Remark 5.7: \(5.1\) holds +C1$" "$work/out" && pass ||
+  fail "analyze gcc: k=3 closed-form row"
+stdout_has analyze-gcc "|U_dd| = 0.25 from the stencils"
+run analyze-gcc-52 0 analyze -s gcc --valence-weights 5:0.9:0.05 -k 5 &&
+  stdout_has analyze-gcc-52 "open: (5.2) fails" && stdout_has analyze-gcc-52 "not tangent-plane continuous"
+run analyze-gcc-json 0 analyze -s gcc --alpha 0.3 --beta 0.4 -k 5 --json && stdout_has analyze-gcc-json '"chen_prautzsch"'
+run analyze-midpoint-6 0 analyze -s midpoint --degree 6 -k 3..5 && stdout_has analyze-midpoint-6 "extraordinary face of k sides"
+run analyze-gcc-boundary 1 analyze -s gcc --boundary -k 2 && stderr_one_line analyze-gcc-boundary &&
+  stderr_has analyze-gcc-boundary "interior configurations only"
+run limit-gcc 1 limit "$meshes/cube.obj" -s gcc -o "$work/x.obj" && stderr_one_line limit-gcc
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold
@@ -400,11 +435,14 @@ run depth-cc 0 depth "$meshes/cube.obj" -s catmull-clark --eps 0.01 --verify &&
 run depth-loop 0 depth "$meshes/tetrahedron.obj" -s loop --eps 0.01 --verify &&
   stdout_has depth-loop "bound (paper (regular) + analysis (extraordinary))" && stdout_has depth-loop "depth 3 would not have been enough"
 run depth-doo-sabin 0 depth "$meshes/cube.obj" -s doo-sabin --eps 0.01 --verify &&
-  stdout_has depth-doo-sabin "bound (paper (regular) + analysis estimate (extraordinary)): distance to the limit after k >= 1 steps" &&
-  stdout_has depth-doo-sabin "extraordinary face of 3 sides" && stdout_has depth-doo-sabin "     4           1536           1538" &&
+  stdout_has depth-doo-sabin "bound (paper (regular) + local subdivision matrix (extraordinary)): distance to the limit after k >= 2 steps" &&
+  stdout_has depth-doo-sabin "(worst at a face of 3 sides)" && stdout_has depth-doo-sabin "     4           1536           1538" &&
   stdout_has depth-doo-sabin "verify: after 4 steps" && stdout_has depth-doo-sabin ": within"
 run depth-butterfly 1 depth "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 && stderr_one_line depth-butterfly &&
   stderr_has depth-butterfly "butterfly: no depth bound for an interpolating scheme"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/square.obj"
+run depth-doo-sabin-corner 1 depth "$work/square.obj" -s doo-sabin --eps 0.01 && stderr_one_line depth-doo-sabin-corner &&
+  stderr_has depth-doo-sabin-corner "doo-sabin: no depth bound yet at a face of 3 sides on the boundary"
 run depth-verify-budget 1 depth "$meshes/cube.obj" -s loop --triangulate --eps 1e-8 --verify &&
   stderr_one_line depth-verify-budget && stderr_has depth-verify-budget "--verify: depth 23 has" &&
   stderr_has depth-verify-budget "over the verification budget of 2^28 faces"

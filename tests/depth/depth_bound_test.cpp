@@ -78,7 +78,7 @@ TEST(DepthBound, PaperFormulasInClosedForm) {
     const double m = 7.0;
     EXPECT_EQ(cheng_catmull_clark_bound(m, 0).depth_for(eps),
               std::max(0, static_cast<int>(std::ceil(std::log(m / (3.0 * eps)) / std::log(4.0) - 1e-12))));
-    EXPECT_EQ(doo_sabin_bound(m).depth_for(eps),
+    EXPECT_EQ(doo_sabin_bound(m, 1).depth_for(eps),
               1 + std::max(0, static_cast<int>(std::ceil(std::log(m / (4.0 * eps)) / std::log(4.0) - 1e-12))));
     EXPECT_EQ(loop_paper_bound(m, 5).depth_for(eps),
               std::max(0, static_cast<int>(std::ceil(std::log(m / eps) / std::log(4.0) - 1e-12))));
@@ -156,7 +156,7 @@ TEST(DooSabinBound, HoldsForBiquadraticRefinementOfAPeriodicGrid) {
   // The torus grid stands for the mesh after the first Doo-Sabin step,
   // where every vertex has valence 4.
   PeriodicGrid grid{6, 8, torus.positions};
-  const DepthBound bound = doo_sabin_bound(max_second_difference(grid_mesh(grid)));
+  const DepthBound bound = doo_sabin_bound(max_second_difference(grid_mesh(grid)), 1);
   for (int level = 1; level <= 5; ++level) {
     const double measured = max_biquadratic_limit_distance(grid);
     EXPECT_LE(measured, bound.at(level)) << "level " << level;

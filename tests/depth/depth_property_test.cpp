@@ -81,9 +81,7 @@ TEST(DepthProperty, BoundHoldsOnSharedMeshesAndPerturbations) {
   for (const std::string& file : kSharedMeshes) {
     const PolygonMesh original = read_mesh(dir + "/" + file).mesh;
     const double size = largest_extent(original);
-    // Not doo-sabin: its extraordinary-face term fails on cgal/3torus.obj,
-    // assimp/uv_sphere.obj and geomview/mushroom.obj (docs/design.md, "Depth").
-    for (const char* scheme_name : {"loop", "catmull-clark", "loop-warren"}) {
+    for (const char* scheme_name : {"loop", "catmull-clark", "loop-warren", "doo-sabin"}) {
       const Scheme& scheme = *find_scheme(scheme_name);
       const PolygonMesh mesh = for_scheme(original, scheme);
       check_bound_holds(mesh, scheme, file);

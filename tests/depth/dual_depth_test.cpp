@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 #include <cmath>
 #include <random>
 #include <string>
@@ -15,6 +17,7 @@
 #include "subdiv/analysis/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/depth.h"
+#include "subdiv/depth/dual_face_bound.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/topology.h"
@@ -24,6 +27,7 @@
 #include "subdiv/rules/scheme.h"
 #include "depth/depth_test_meshes.h"
 #include "support/bsplines.h"
+#include "support/refine_options.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -157,22 +161,108 @@ TEST(DualLimit, NeighbourhoodWalkIsCanonicalOnTheLayout) {
   }
 }
 
-TEST(DooSabinDepth, PaperBoundAfterTheFirstStepPlusExtraordinaryFaces) {
+TEST(DooSabinDepth, PaperBoundPlusExtraordinaryFacesFromTheLevelTheyAreApart) {
+  // The cube's triangles (its vertices' V-faces) are two rings apart after
+  // one step: their two-ring neighbourhoods become canonical after two.
   const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
   const DepthBound bound = depth_bound(cube, doo_sabin_scheme());
-  EXPECT_EQ(bound.start, 1);
+  EXPECT_EQ(bound.start, 2);
   ASSERT_EQ(bound.terms.size(), 2u);
-  EXPECT_EQ(bound.source, "paper (regular) + analysis estimate (extraordinary)");
-  const PolygonMesh first = refine(cube, doo_sabin_scheme());
-  EXPECT_EQ(bound.terms[0].amplitude, max_second_difference(first) / 4.0);
+  EXPECT_EQ(bound.source, "paper (regular) + local subdivision matrix (extraordinary)");
+  const PolygonMesh second = refine(cube, doo_sabin_scheme(), test::levels(2));
+  EXPECT_EQ(bound.terms[0].amplitude, max_second_difference(second) / 4.0);
   EXPECT_EQ(bound.terms[0].rate, 0.25);
   EXPECT_NE(bound.terms[1].what.find("face of 3 sides"), std::string::npos) << bound.terms[1].what;
   EXPECT_NEAR(bound.terms[1].rate, 0.5, 1e-9);
-  EXPECT_EQ(bound.terms[1].amplitude, limit_distances(first, doo_sabin_scheme()).max);
+  // The amplitude is at least what it bounds at the start level itself.
+  EXPECT_GE(bound.terms[1].amplitude, limit_distances(second, doo_sabin_scheme()).max);
   const int depth = bound.depth_for(0.01);
   const DepthCheck check = check_depth(cube, doo_sabin_scheme(), bound, depth);
   EXPECT_LE(check.measured, 0.01);
   EXPECT_EQ(check.approximated, 0);
+}
+
+TEST(DooSabinDepth, FaceOperatorFollowsRefinement) {
+  // The operator's matrix, applied to a face's neighbourhood found in the
+  // mesh, gives the neighbourhood of the face's descendant (child face f of
+  // face f, dual_split.cpp) that refinement computes, and its distance
+  // functionals give the measured vertex-to-limit distances there.
+  std::mt19937 random(31);
+  for (const int k : {3, 5, 6, 8}) {
+    const DualFaceOperator op = dual_face_operator(doo_sabin_scheme(), k);
+    const RingMesh ring = ring_mesh(SplitRule::dual, {Configuration::Kind::interior, k}, 5);
+    PolygonMesh level = perturbed(ring.mesh, 0.2, random);
+    for (Vec3& p : level.positions) p.z += 0.3 * (p.x * p.x - p.y * p.y);
+    const std::optional<Eigen::MatrixXd> start =
+        canonical_neighbourhood(op, MeshTopology(level), level.positions, ring.centre_face);
+    ASSERT_TRUE(start) << k;
+    Eigen::MatrixXd expected = *start;
+    for (int m = 1; m <= 3; ++m) {
+      level = refine(level, doo_sabin_scheme());
+      expected = op.S * expected;
+      const MeshTopology t(level);
+      const std::optional<Eigen::MatrixXd> found = canonical_neighbourhood(op, t, level.positions, ring.centre_face);
+      ASSERT_TRUE(found) << k << " level " << m;
+      EXPECT_LT((*found - expected).cwiseAbs().maxCoeff(), 1e-12) << k << " level " << m;
+      const LimitDistances measured = limit_distances(level, doo_sabin_scheme());
+      double predicted = 0.0, at_face = 0.0;
+      for (const auto& row : op.distance) {
+        Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+        for (const auto& [j, w] : row) sum += w * expected.row(j);
+        predicted = std::max(predicted, sum.norm());
+      }
+      for (const Index v : t.face_vertices(ring.centre_face))
+        at_face = std::max(at_face, measured.distances[static_cast<std::size_t>(v)]);
+      EXPECT_NEAR(at_face, predicted, 1e-12) << k << " level " << m;
+    }
+  }
+}
+
+TEST(DooSabinDepth, NeighbourhoodsTooCloseOrOddAreNotCanonical) {
+  // Level 1 of the cube: each triangle's two-ring holds another triangle.
+  const PolygonMesh first = refine(read_mesh(test::bundled_path("cube.obj")).mesh, doo_sabin_scheme());
+  const MeshTopology t(first);
+  const DualFaceOperator op = dual_face_operator(doo_sabin_scheme(), 3);
+  int triangles = 0;
+  for (Index f = 0; f < t.face_count(); ++f)
+    if (t.face_size(f) == 3) {
+      ++triangles;
+      EXPECT_FALSE(canonical_neighbourhood(op, t, first.positions, f)) << f;
+    }
+  EXPECT_EQ(triangles, 8);
+  // A face of the wrong size is never matched.
+  const RingMesh ring = ring_mesh(SplitRule::dual, {Configuration::Kind::interior, 5}, 4);
+  EXPECT_FALSE(canonical_neighbourhood(op, MeshTopology(ring.mesh), ring.mesh.positions, ring.centre_face));
+}
+
+TEST(DooSabinDepth, HoldsAndIsTightOnMeshesWithManyExtraordinaryFaces) {
+  // The meshes on which an amplitude measured after the first step failed
+  // (by 3% to 78%): the bound holds at every level, and depth - 1 would not
+  // be enough (measured above half the bound, the rate 1/2 being the step).
+  const std::string dir = test::shared_mesh_dir();
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "shared mesh collection not found at " << dir;
+  for (const char* file : {"cgal/3torus.obj", "assimp/uv_sphere.obj", "geomview/mushroom.obj", "cgal/hole.obj"}) {
+    const PolygonMesh mesh = read_mesh(dir + "/" + file).mesh;
+    const DepthBound bound = depth_bound(mesh, doo_sabin_scheme());
+    PolygonMesh level = refine(mesh, doo_sabin_scheme(), test::levels(bound.start));
+    for (int k = bound.start; level.face_count() <= 60000; ++k) {
+      const double measured = limit_distances(level, doo_sabin_scheme()).max;
+      EXPECT_LE(measured, bound.at(k)) << file << " level " << k;
+      EXPECT_GT(measured, 0.25 * bound.at(k)) << file << " level " << k;
+      level = refine(level, doo_sabin_scheme());
+    }
+  }
+}
+
+TEST(DooSabinDepth, ExtraordinaryFacesOnTheBoundaryAreRefused) {
+  // A grid's corner vertex has one face: its V-face is a triangle on the
+  // boundary, whose neighbourhood never becomes the interior one.
+  try {
+    (void)depth_bound(test::quad_grid(3, 3), doo_sabin_scheme());
+    ADD_FAILURE() << "not refused";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("on the boundary"), std::string::npos) << e.what();
+  }
 }
 
 TEST(DooSabinDepth, RegularTorusHasThePaperBoundOnly) {

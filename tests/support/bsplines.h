@@ -24,4 +24,15 @@ inline double quadratic_bspline(double x) {
   return 0.0;
 }
 
+/// The uniform B-spline of any degree n >= 0 centred at 0, support
+/// [-(n+1)/2, (n+1)/2], by the Cox-de Boor recursion on the uniform knots
+///   B_n(x) = ((h + x) B_(n-1)(x + 1/2) + (h - x) B_(n-1)(x - 1/2)) / n,
+/// h = (n+1)/2, from B_0 = the indicator of [-1/2, 1/2).
+inline double centred_bspline(int n, double x) {
+  const double h = 0.5 * (n + 1);
+  if (x < -h || x >= h) return 0.0;
+  if (n == 0) return 1.0;
+  return ((h + x) * centred_bspline(n - 1, x + 0.5) + (h - x) * centred_bspline(n - 1, x - 0.5)) / n;
+}
+
 }  // namespace subdiv::test

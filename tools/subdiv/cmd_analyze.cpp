@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "analysis_report.h"
+#include "gcc_report.h"
 #include "commands.h"
 #include "scheme_option.h"
 #include "io/file_io.h"
@@ -44,6 +45,7 @@ struct AnalyzeCommandOptions {
   std::string boundary_rules = "standard";
   std::optional<double> flatness;
   std::optional<double> tension;
+  DegreeOptionValues degree;
   std::optional<int> warmup;  // quasi-4-8: binary steps before the matrix
 };
 
@@ -142,7 +144,7 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
   if (const CurveScheme* curve = find_curve_scheme(opt.scheme); curve && !find_scheme(opt.scheme)) {
     return run_curve_analysis(with_tension(*curve, opt.tension), opt);
   }
-  const Scheme selected = with_tension(scheme_named(opt.scheme), opt.tension);
+  const Scheme selected = with_degree_options(with_tension(scheme_named(opt.scheme), opt.tension), opt.degree);
   const Scheme* scheme = &selected;
   if (scheme->split == SplitRule::quasi_4_8) {  // no canonical ring meshes: the n-gon experiment
     if (opt.boundary || !opt.corner.empty() || opt.json || !opt.plot_spectrum.empty() || opt.plot_charmap_given ||
@@ -170,6 +172,10 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
                                           base.corner == CornerType::convex ? "below" : "above"));
     base.angle = degrees * std::numbers::pi / 180.0;
   }
+  if (selected.steps && base.kind != Configuration::Kind::interior)
+    throw InvalidInputError(std::string(selected.name) +
+                            " is analysed at interior configurations only (its boundary keeps or Chaikin-cuts the "
+                            "boundary polygon; see docs/schemes.md)");
   const std::string k_text = !opt.k.empty() ? opt.k : base.kind == Configuration::Kind::interior ? "3..12" : "1..12";
   const auto [k_first, k_last] = parse_k_range(k_text, base);
 
@@ -187,6 +193,8 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
   options.rules.boundary_rules =
       opt.boundary_rules == "piecewise-smooth" ? BoundaryRules::piecewise_smooth : BoundaryRules::standard;
   options.rules.flatness = opt.flatness;
+  // Higher degrees reach further: the core of M_n-bar is floor((n-1)/2) rings.
+  if (scheme->steps) options.max_rings = std::max(options.max_rings, scheme->parameters.degree / 2 + 1);
   std::vector<ConfigurationAnalysis> results;
   for (int k = k_first; k <= k_last; ++k) {
     Configuration c = base;
@@ -232,8 +240,16 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
   }
   for (const auto& [path, bytes] : plots) detail::write_file_atomically(path, bytes);
 
-  const std::string text =
-      opt.json ? analysis_json(scheme->name, results) : format_analysis_table(scheme->name, results);
+  std::string text = opt.json ? analysis_json(scheme->name, results) : format_analysis_table(scheme->name, results);
+  if (scheme->steps) {
+    if (opt.json) {
+      nlohmann::json doc = nlohmann::json::parse(text);
+      doc["chen_prautzsch"] = gcc_report_json(*scheme, results);
+      text = doc.dump(2) + "\n";
+    } else {
+      text += format_gcc_report(*scheme, results);
+    }
+  }
   std::fwrite(text.data(), 1, text.size(), stdout);
   if (!opt.json && !is_primal(scheme->split))
     std::printf("(%s: interior k is an extraordinary face of k sides in a ring of quads)\n", to_string(scheme->split));
@@ -266,6 +282,7 @@ Command add_analyze_command(CLI::App& app) {
                   "Flatness parameter s at concave corners (piecewise-smooth; default 1 - (1/4)/lambda_3, 0 = off)")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
+  add_degree_options(*cmd, opt->degree);
   cmd->add_option("--warmup", opt->warmup, "quasi-4-8: binary steps before the matrix is read (default 8)")
       ->check(CLI::Range(0, 10));
   cmd->add_flag("--json", opt->json, "Print JSON (spectra, limit and tangent masks, layout) instead of the table");
@@ -287,6 +304,8 @@ Command add_analyze_command(CLI::App& app) {
       "  subdiv analyze -s catmull-clark --boundary -k 1..5 --json\n"
       "  subdiv analyze -s loop --boundary -k 3..9 --boundary-rules piecewise-smooth\n"
       "  subdiv analyze -s cubic-bspline    (curve schemes: cubic-bspline, chaikin, four-point)\n"
+      "  subdiv analyze -s gcc --alpha 0.3 --beta 0.4 -k 3..16   (with the paper's closed forms)\n"
+      "  subdiv analyze -s midpoint --degree 6 -k 3..8\n"
       "  subdiv analyze -s quasi-4-8 -k 3..12 --warmup 8   (n-regular neighbourhoods)\n"
       "  subdiv analyze -s catmull-clark --plot-spectrum /tmp/cc.svg --plot-charmap 5 /tmp/cc5.png");
   return [opt, charmap] {

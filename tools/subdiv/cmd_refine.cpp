@@ -42,6 +42,7 @@ struct RefineCommandOptions {
   bool quiet = false;
   std::optional<double> tension;
   RuleOptionValues rules;
+  DegreeOptionValues degree;
   bool full_steps = false;            // quasi-4-8: -l counts 4-8 steps (two binary steps each)
   std::string quasi_boundary;         // quasi-4-8: fixed or smoothed
   std::vector<std::string> creases;  // --crease A,B: infinitely sharp edge tags
@@ -76,6 +77,9 @@ const char* surface_option_given(const RefineCommandOptions& opt) {
   if (opt.rules.corner_angles != "fixed") return "--corner-angles";
   if (opt.rules.flatness) return "--flatness";
   if (!opt.rules.corners.empty()) return "--corner";
+  if (opt.degree.degree) return "--degree";
+  if (!opt.degree.alpha.empty() || !opt.degree.beta.empty()) return "--alpha/--beta";
+  if (!opt.degree.valence_weights.empty()) return "--valence-weights";
   if (!opt.creases.empty()) return "--crease";
   if (opt.full_steps) return "--full-steps";
   if (!opt.quasi_boundary.empty()) return "--quasi-boundary";
@@ -156,7 +160,7 @@ int run_refine(const RefineCommandOptions& opt) {
     throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + surface_scheme_names() +
                             "; curve schemes: " + curve_scheme_names() + ")");
   }
-  const Scheme chosen = with_tension(*registered, opt.tension);
+  const Scheme chosen = with_degree_options(with_tension(*registered, opt.tension), opt.degree);
   const Scheme* scheme = &chosen;
   check_output_path(opt.input, opt.output);
 
@@ -255,7 +259,10 @@ Command add_refine_command(CLI::App& app) {
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
   cmd->add_option("-s,--scheme", opt->scheme, "Scheme, surface or curve (see 'subdiv schemes')")->capture_default_str();
   cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
-  cmd->add_option("-l,--levels", opt->levels, "Refinement steps (quasi-4-8: binary steps, see --full-steps)")->capture_default_str()->check(CLI::Range(0, 12));
+  add_degree_options(*cmd, opt->degree);
+  cmd->add_option("-l,--levels", opt->levels, "Refinement steps (quasi-4-8: binary steps, see --full-steps)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 12));
   cmd->add_option("--boundary", opt->boundary,
                   "Boundary interpolation, overriding the file's tag (default: the tag, else edge-and-corner)")
       ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
@@ -289,6 +296,8 @@ Command add_refine_command(CLI::App& app) {
       "  subdiv refine data/meshes/spot_control_mesh.obj -s catmull-clark -l 3 -o /tmp/spot3.obj\n"
       "  subdiv refine data/meshes/cube.obj -s loop --triangulate -l 4 -o /tmp/cube_loop.ply --stats\n"
       "  subdiv refine curve.obj -s four-point --tension 0.08 -l 4 -o /tmp/curve4.obj\n"
+      "  subdiv refine data/meshes/cube.obj -s gcc --degree 5 --alpha 0.2,0.3 --beta 0.5,0.4 -l 3 -o /tmp/gcc5.obj\n"
+      "  subdiv refine data/meshes/cube.obj -s midpoint --degree 4 -l 3 -o /tmp/m4.obj\n"
       "  subdiv refine data/meshes/tetrahedron.obj -s quasi-4-8 -l 3 --full-steps -o /tmp/tetra_q48.obj");
   return [opt] { return run_refine(*opt); };
 }

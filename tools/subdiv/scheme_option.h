@@ -4,6 +4,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "subdiv/curves/curve_scheme.h"
 #include "subdiv/rules/scheme.h"
@@ -24,5 +27,21 @@ const Scheme& scheme_named(const std::string& name);
 Scheme with_tension(const Scheme& scheme, std::optional<double> tension);
 /// The same for a curve scheme (four-point has a tension).
 CurveScheme with_tension(const CurveScheme& scheme, std::optional<double> tension);
+
+/// The generalized Catmull-Clark options of refine and analyze.
+struct DegreeOptionValues {
+  std::optional<int> degree;
+  std::string alpha;  ///< one value, or one per smoothing operator, comma-separated
+  std::string beta;
+  std::vector<std::string> valence_weights;  ///< M:ALPHA:BETA, for every operator
+};
+
+/// --degree, --alpha, --beta, --valence-weights.
+void add_degree_options(CLI::App& cmd, DegreeOptionValues& values);
+
+/// `scheme` with those options; throws InvalidInputError naming the option
+/// when the scheme has no degree (only gcc and midpoint have) or a value is
+/// malformed or outside the paper's range.
+Scheme with_degree_options(const Scheme& scheme, const DegreeOptionValues& values);
 
 }  // namespace subdiv::cli

@@ -57,8 +57,8 @@ DepthBound cheng_catmull_clark_bound(double max_second_difference, int start);
 
 /// The paper's Doo-Sabin bound (Theorem 5, Corollary 5): after the first
 /// step every vertex has valence 4, and then distance after k more steps
-/// <= (1/4) (1/4)^k M1, with M1 the largest second difference along the
-/// lines of that first-step mesh. `start` = 1.
-DepthBound doo_sabin_bound(double max_second_difference_after_first_step);
+/// <= (1/4) (1/4)^k M, with M the largest second difference along the
+/// lines of the mesh after `start` >= 1 steps (the paper: start = 1).
+DepthBound doo_sabin_bound(double max_second_difference, int start);
 
 }  // namespace subdiv

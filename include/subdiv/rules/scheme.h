@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "subdiv/mesh/polygon_mesh.h"
@@ -33,6 +34,31 @@ enum class EdgeRule : std::uint8_t { smooth, crease };
 
 const char* to_string(VertexRule);
 
+/// The weights of one smoothing operator B_{alpha,beta} of Chen and
+/// Prautzsch's generalized Catmull-Clark schemes (2012, Figure 1.3): an
+/// interior vertex v of valence m of a quad mesh becomes
+///   alpha(m) v + beta(m)/m sum e_i + gamma(m)/m sum d_i,  gamma = 1 - alpha - beta,
+/// e_i its edge neighbours, d_i the vertices opposite it in its quads.
+struct SmoothingWeights {
+  /// The weights at valences not listed in `valences`.
+  enum class Rule {
+    constant,       ///< alpha, beta below
+    catmull_clark,  ///< Catmull-Clark's: alpha(m) = 1 - 3/m, beta(m) = 2/m
+  };
+  struct AtValence {
+    int valence = 4;
+    double alpha = 0.25;
+    double beta = 0.5;
+  };
+  Rule rule = Rule::constant;
+  double alpha = 0.25;
+  double beta = 0.5;
+  std::vector<AtValence> valences = {};
+
+  /// alpha(m) and beta(m).
+  std::pair<double, double> at(int m) const;
+};
+
 /// The parameters of a parameterised family of schemes. A registered scheme
 /// carries its defaults; set them on a copy (Scheme is a plain value) to
 /// refine or analyse another member. Masks read them from the LevelView.
@@ -40,6 +66,12 @@ struct SchemeParameters {
   /// Butterfly's tension w (Dyn, Levin and Gregory 1990): 1/16 reproduces
   /// cubic polynomials on regular meshes.
   double tension = 1.0 / 16.0;
+  /// Generalized Catmull-Clark schemes (rules/generalized_catmull_clark.h):
+  /// the degree n >= 2 and the smoothing operators B_1 .. B_r, r = (n - 1) / 2
+  /// rounded down: one entry for all of them, or r entries (none for n = 2).
+  /// Change the degree with set_degree(), which also sets the split.
+  int degree = 3;
+  std::vector<SmoothingWeights> smoothing = {};
 };
 
 /// What a mask may look at: the parent level's topology (not its positions)
@@ -136,6 +168,11 @@ using CornerMask = void (*)(const LevelView& level, Index corner, MaskBuilder& m
 /// Dual split: the child vertex near end `vertex` of boundary edge `edge`.
 using BoundaryPointMask = void (*)(const LevelView& level, Index edge, Index vertex, MaskBuilder& mask);
 
+struct Scheme;
+/// Composite schemes: the operators one level applies in turn, each an
+/// ordinary one-split scheme with its own parameters (refine.cpp).
+using StepList = std::vector<Scheme> (*)(const SchemeParameters& parameters);
+
 struct Scheme {
   std::string_view name;      ///< as users type it: "catmull-clark", "loop-warren"
   std::string_view summary;   ///< one line
@@ -162,6 +199,12 @@ struct Scheme {
   /// boundary would degenerate). The analysis lifts it: its ring mesh's outer
   /// boundary lies outside the neighbourhood it reads.
   bool needs_closed_mesh = false;
+  /// Composite schemes (generalized Catmull-Clark, midpoint): one level is
+  /// these steps in turn, R (a quad split), smoothing steps (identity
+  /// splits) and possibly A, a dual split of the level's parent whose masks
+  /// weight the quad split's vertices; `split` is then the level's overall
+  /// split (quad, or dual when the steps end with A). nullptr otherwise.
+  StepList steps = nullptr;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.

@@ -13,6 +13,9 @@
 //   midedge split (QD, arity sqrt 2): a child vertex per edge, a face per
 //     parent face and vertex; child vertices are numbered as the edges
 //     (src/topology/midedge_split.cpp). Closed meshes only.
+//   identity: the same faces and vertices (a smoothing step of a composite
+//     scheme, e.g. B_{alpha,beta} of generalized Catmull-Clark); child
+//     vertices are numbered as the parent's (vertex points).
 //   quasi 4-8 bisection (arity sqrt 2, Velho): a binary step whose split
 //     depends on the positions; not a split_topology() rule, see
 //     subdiv/topology/bisection_split.h.
@@ -28,15 +31,15 @@
 
 namespace subdiv {
 
-enum class SplitRule { quad, triangle, dual, midedge, quasi_4_8 };
+enum class SplitRule { quad, triangle, dual, midedge, identity, quasi_4_8 };
 
 /// The primal splits keep the parent's vertices (as vertex points) and its
 /// sharp features; the analysis' vertex configurations, limit positions,
 /// depth and adaptive refinement are written for them.
 constexpr bool is_primal(SplitRule r) { return r == SplitRule::quad || r == SplitRule::triangle; }
 
-/// How much one step shrinks the faces' size: 2, or sqrt 2 for the midedge
-/// split and the quasi 4-8 bisection.
+/// How much one step shrinks the faces' size: 2, sqrt 2 for the midedge
+/// split and the quasi 4-8 bisection, 1 for the identity.
 double arity(SplitRule r);
 
 const char* to_string(SplitRule);
