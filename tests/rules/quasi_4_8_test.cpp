@@ -192,6 +192,33 @@ TEST(QuasiFourEight, Boundaries) {
   EXPECT_LT(norm(fixed.positions[0]), 1e-15);
 }
 
+// Figure 11: a triangulated box with two open sides. (b) boundary tagged
+// (fixed): the open rims stay; (c) boundary smoothed and one longitudinal
+// interior edge tagged: the rims move, except the tagged edge's ends.
+TEST(QuasiFourEight, OpenBoxFigure11) {
+  // A square tube along z: rims at z = 0 and z = 2, 4 vertices each, plus a
+  // middle ring at z = 1; each quad side cut by a diagonal.
+  std::vector<Vec3> p;
+  for (int k = 0; k < 3; ++k)
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}) p.push_back({x, y, double(k)});
+  std::vector<std::vector<Index>> faces;
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < 4; ++i) {
+      const Index a = 4 * k + i, b = 4 * k + (i + 1) % 4, c = a + 4, d = b + 4;
+      faces.push_back({a, b, d});
+      faces.push_back({a, d, c});
+    }
+  const PolygonMesh box = make_mesh(p, faces);
+  const PolygonMesh fixed = refine(box, quasi_4_8_scheme(), steps(4));
+  for (const Index v : {0, 1, 2, 3, 8, 9, 10, 11}) EXPECT_EQ(fixed.positions[v], box.positions[v]) << v;
+  PolygonMesh tagged = box;
+  tagged.tags.creases.push_back({0, 4, kInfiniteSharpness});  // the longitudinal edge 0-4-8
+  tagged.tags.creases.push_back({4, 8, kInfiniteSharpness});
+  const PolygonMesh smooth = refine(tagged, quasi_4_8_scheme(), steps(4, Quasi48Boundary::smoothed));
+  for (const Index v : {0, 4, 8}) EXPECT_EQ(smooth.positions[v], box.positions[v]) << v;
+  for (const Index v : {1, 2, 3, 9, 10, 11}) EXPECT_GT(norm(smooth.positions[v] - box.positions[v]), 1e-3) << v;
+}
+
 TEST(QuasiFourEight, VertexChannelsFollowPositions) {
   PolygonMesh mesh = bumpy_ngon();
   VertexChannel xyz{"xyz", 3, {}};
