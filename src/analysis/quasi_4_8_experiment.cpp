@@ -88,29 +88,43 @@ bool number(const MeshTopology& t, Index centre, Index first, int rings, Neighbo
   return true;
 }
 
-// The piecewise-linear characteristic map (quasi_4_8_experiment.h): the
-// subdominant eigenvectors on the coarse neighbourhood, refined `steps` 4-8
-// steps by the stencils recorded on the mesh's own geometry; only child
-// vertices whose rows lie inside the neighbourhood are known.
+// The characteristic map: the subdominant eigenvectors of the wider
+// neighbourhood's matrix S, when its pair is the experiment's.
 bool check_characteristic_map(const PolygonMesh& coarse, const std::vector<Index>& labels, const Eigen::MatrixXd& S,
                               Quasi48Experiment& x, int steps) {
   const std::optional<SubdominantPair> pair = subdominant_eigenvectors(S);
   if (!pair || std::abs(pair->lambda1 - x.leading[1]) > 1e-9 || std::abs(pair->lambda2 - x.leading[2]) > 1e-9)
     return false;
+  std::vector<Vec3> values(labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    values[i] = {pair->vectors[0](static_cast<Eigen::Index>(i)), pair->vectors[1](static_cast<Eigen::Index>(i)), 0.0};
+  const PiecewiseLinearMap map = piecewise_linear_map(coarse, labels, values, steps);
+  x.charmap_faces = map.faces;
+  x.charmap_flipped = map.flipped;
+  x.charmap_winding = map.winding;
+  x.charmap_regular = map.regular;
+  return true;
+}
+
+}  // namespace
+
+PiecewiseLinearMap piecewise_linear_map(const PolygonMesh& coarse, std::span<const Index> vertices,
+                                        std::span<const Vec3> values, int steps) {
+  if (vertices.size() != values.size() || vertices.empty() || steps < 1)
+    throw InvalidInputError("piecewise-linear map: one value per vertex, at least one vertex and one step");
   std::vector<char> inside(static_cast<std::size_t>(coarse.vertex_count()), 0);
   std::vector<Vec3> data(static_cast<std::size_t>(coarse.vertex_count()));
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    inside[static_cast<std::size_t>(labels[i])] = 1;
-    data[static_cast<std::size_t>(labels[i])] = {pair->vectors[0](static_cast<Eigen::Index>(i)),
-                                                 pair->vectors[1](static_cast<Eigen::Index>(i)), 0.0};
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    inside[static_cast<std::size_t>(vertices[i])] = 1;
+    data[static_cast<std::size_t>(vertices[i])] = {values[i].x, values[i].y, 0.0};
   }
   RefineOptions o;
   o.levels = 2 * steps;
   PolygonMesh fine;
-  const std::vector<StencilTable> tables = refine_stencils(coarse, quasi_4_8_scheme(), o, &fine);
-  const StencilTable total = compose(tables);
+  const StencilTable total = compose(refine_stencils(coarse, quasi_4_8_scheme(), o, &fine));
   std::vector<Vec3> image(static_cast<std::size_t>(total.row_count()));
   total.apply(data, image);
+  // Known: the child vertices whose rows lie inside the neighbourhood.
   std::vector<char> known(image.size(), 1);
   for (Index r = 0; r < total.row_count(); ++r) {
     const auto vs = total.row_vertices(r);
@@ -134,11 +148,12 @@ bool check_characteristic_map(const PolygonMesh& coarse, const std::vector<Index
     else
       (area > 0 ? positive : negative) += 1;
   }
-  x.charmap_faces = positive + negative + degenerate;
-  x.charmap_flipped = std::min(positive, negative) + degenerate;
+  PiecewiseLinearMap map;
+  map.faces = positive + negative + degenerate;
+  map.flipped = std::min(positive, negative) + degenerate;
   // The winding of the centre's ring around the centre's image.
   const MeshTopology t(fine);
-  const Index centre = labels.front();
+  const Index centre = vertices.front();
   const Vec3 c = image[static_cast<std::size_t>(centre)];
   double turn = 0.0;
   const auto ring = t.vertex_edges(centre);
@@ -147,12 +162,10 @@ bool check_characteristic_map(const PolygonMesh& coarse, const std::vector<Index
     const Vec3 q = image[static_cast<std::size_t>(t.other_vertex(ring[(j + 1) % ring.size()], centre))] - c;
     turn += std::atan2(p.x * q.y - p.y * q.x, p.x * q.x + p.y * q.y);
   }
-  x.charmap_winding = static_cast<int>(std::lround(turn / (2.0 * std::numbers::pi)));
-  x.charmap_regular = x.charmap_faces > 0 && x.charmap_flipped == 0 && std::abs(x.charmap_winding) == 1;
-  return true;
+  map.winding = static_cast<int>(std::lround(turn / (2.0 * std::numbers::pi)));
+  map.regular = map.faces > 0 && map.flipped == 0 && std::abs(map.winding) == 1;
+  return map;
 }
-
-}  // namespace
 
 Quasi48Experiment quasi_4_8_experiment(const PolygonMesh& control, Index centre, int warmup, int max_rings,
                                        int charmap_steps) {

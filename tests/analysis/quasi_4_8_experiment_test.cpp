@@ -69,6 +69,37 @@ TEST(Quasi48Experiment, CharacteristicMapApproximation) {
   EXPECT_NE(early.note.find("no characteristic map"), std::string::npos) << early.note;
 }
 
+// The map check can fail: on the 4-8 grid, the identity map (x, y) is
+// regular; z^2 winds twice around the centre; (x, x) is flat.
+TEST(Quasi48Experiment, PiecewiseLinearMapDetectsBadMaps) {
+  const PolygonMesh grid = test::four_eight_grid(16);
+  const Index centre = 8 + 17 * 8;
+  std::vector<Index> vertices{centre};
+  for (Index v = 0; v < grid.vertex_count(); ++v)
+    if (v != centre && norm(grid.positions[v] - grid.positions[centre]) <= 5.0) vertices.push_back(v);
+  const auto values = [&](auto f) {
+    std::vector<Vec3> out;
+    for (const Index v : vertices) out.push_back(f(grid.positions[v] - grid.positions[centre]));
+    return out;
+  };
+  const PiecewiseLinearMap identity = piecewise_linear_map(grid, vertices, values([](Vec3 p) { return p; }), 1);
+  EXPECT_TRUE(identity.regular);
+  EXPECT_GT(identity.faces, 50);
+  EXPECT_EQ(identity.winding, 1);
+  const PiecewiseLinearMap square = piecewise_linear_map(grid, vertices, values([](Vec3 p) {
+                                                           return Vec3{p.x * p.x - p.y * p.y, 2 * p.x * p.y, 0};
+                                                         }),
+                                                         1);
+  EXPECT_FALSE(square.regular);
+  EXPECT_EQ(square.winding, 2);
+  const PiecewiseLinearMap flat = piecewise_linear_map(grid, vertices, values([](Vec3 p) {
+                                                         return Vec3{p.x, p.x, 0};
+                                                       }),
+                                                       1);
+  EXPECT_FALSE(flat.regular);
+  EXPECT_EQ(flat.flipped, flat.faces);
+}
+
 TEST(Quasi48Experiment, SaysWhenThereIsNoMatrix) {
   const Quasi48Experiment x = quasi_4_8_ngon_experiment(5, 2);  // the boundary is too close
   EXPECT_EQ(x.rings, 0);

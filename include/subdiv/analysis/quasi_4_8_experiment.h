@@ -26,6 +26,7 @@
 
 #include <Eigen/Core>
 #include <complex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,19 @@ struct Quasi48Experiment {
   int charmap_winding = 0;
   bool charmap_regular = false;  ///< charmap_faces > 0, none flipped, winding +-1
 };
+
+/// A map given on a neighbourhood of a level (`vertices`, the centre first;
+/// `values`, their images in the plane: x and y), refined `steps` 4-8 steps
+/// with the stencils of the level's own geometry and read where it depends
+/// on the neighbourhood alone.
+struct PiecewiseLinearMap {
+  int faces = 0;         ///< faces whose three vertices are known
+  int flipped = 0;       ///< against the majority orientation, or flat
+  int winding = 0;       ///< of the centre's ring around the centre's image
+  bool regular = false;  ///< faces > 0, none flipped, winding +-1
+};
+PiecewiseLinearMap piecewise_linear_map(const PolygonMesh& coarse, std::span<const Index> vertices,
+                                        std::span<const Vec3> values, int steps);
 
 /// The experiment at vertex `centre` of a triangle mesh (quasi-4-8's
 /// standard options, boundary fixed). rings are tried from 1 to max_rings.
