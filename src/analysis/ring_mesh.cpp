@@ -204,6 +204,10 @@ std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels
 }
 
 RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int rings) {
+  // Its topology depends on the positions: no canonical ring exists
+  // (analysis/quasi_4_8_experiment.h reads its matrices off refined n-gons).
+  if (split == SplitRule::quasi_4_8)
+    throw InvalidInputError("the quasi 4-8 bisection has no canonical ring meshes (its split depends on geometry)");
   if (split == SplitRule::dual || split == SplitRule::midedge) {  // at extraordinary faces
     if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
     return dual_ring_mesh(configuration, rings);

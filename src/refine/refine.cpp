@@ -15,6 +15,7 @@
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/validation.h"
 #include "piecewise_smooth.h"
+#include "quasi_4_8_refine.h"
 #include "row_accumulator.h"
 
 namespace subdiv {
@@ -340,7 +341,9 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
   if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
   if (boundary_of(mesh, options) == BoundaryInterpolation::none)
     throw InvalidInputError("boundary interpolation 'none' is not supported; use edge-only or edge-and-corner");
-  if (!is_primal(scheme.split) || scheme.steps) check_no_sharp_features(mesh, scheme, options, lines);
+  // quasi 4-8 reads tags its own way (quasi_4_8_refine.cpp).
+  if ((!is_primal(scheme.split) && scheme.split != SplitRule::quasi_4_8) || scheme.steps)
+    check_no_sharp_features(mesh, scheme, options, lines);
   if (scheme.steps) {
     // The steps' own checks (degree, weights), and the split they make.
     const std::vector<Scheme> steps = scheme.steps(scheme.parameters);
@@ -402,6 +405,7 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 
 PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                    const SourceLines* lines) {
+  if (scheme.split == SplitRule::quasi_4_8) return detail::refine_quasi_4_8(mesh, scheme, options, lines);
   MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
@@ -420,6 +424,7 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
 
 std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                                           PolygonMesh* final_level) {
+  if (scheme.split == SplitRule::quasi_4_8) return detail::refine_quasi_4_8_stencils(mesh, scheme, options, final_level);
   MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
@@ -443,6 +448,10 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
 }
 
 StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
+  if (scheme.split == SplitRule::quasi_4_8) {
+    const std::vector<StencilTable> levels = detail::refine_quasi_4_8_stencils(mesh, scheme, options, nullptr);
+    return levels.empty() ? StencilTable::identity(mesh.vertex_count()) : compose(levels);
+  }
   MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);

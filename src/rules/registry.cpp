@@ -8,6 +8,7 @@
 #include "subdiv/rules/linear.h"
 #include "subdiv/rules/loop.h"
 #include "subdiv/rules/midedge.h"
+#include "subdiv/rules/quasi_4_8.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv {
@@ -23,10 +24,10 @@ const char* to_string(VertexRule r) {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 11> schemes = {
+  static const std::array<const Scheme*, 12> schemes = {
       &catmull_clark_scheme(), &loop_scheme(),     &loop_warren_scheme(), &butterfly_scheme(),
       &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(), &generalized_catmull_clark_scheme(),
-      &midpoint_scheme(), &bilinear_scheme(), &linear_scheme()};
+      &midpoint_scheme(), &bilinear_scheme(), &linear_scheme(), &quasi_4_8_scheme()};
   return schemes;
 }
 

@@ -18,7 +18,7 @@ std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, 
 
 double arity(SplitRule r) {
   if (r == SplitRule::identity) return 1.0;
-  return r == SplitRule::midedge ? std::sqrt(2.0) : 2.0;
+  return r == SplitRule::midedge || r == SplitRule::quasi_4_8 ? std::sqrt(2.0) : 2.0;
 }
 
 const char* to_string(SplitRule r) {
@@ -28,6 +28,7 @@ const char* to_string(SplitRule r) {
     case SplitRule::dual: return "dual split (QD, arity 2)";
     case SplitRule::midedge: return "midedge split (QD, arity sqrt 2)";
     case SplitRule::identity: return "identity (same faces)";
+    case SplitRule::quasi_4_8: return "quasi 4-8 bisection (geometric, arity sqrt 2)";
   }
   return "?";
 }
@@ -103,6 +104,8 @@ void require_edges(const MeshTopology& topology) {
 
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
                         PolygonMesh& child, std::span<const double> child_end_sharpness) {
+  if (rule == SplitRule::quasi_4_8)  // its split reads positions
+    throw InvalidInputError("the quasi 4-8 bisection is not a topological split (bisection_split.h)");
   detail::require_edges(topology);
   SplitMap map = rule == SplitRule::quad       ? detail::quad_split(topology, child)
                  : rule == SplitRule::triangle ? detail::triangle_split(topology, child)

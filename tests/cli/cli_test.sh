@@ -459,5 +459,31 @@ run adaptive-info 0 info "$work/spot_adaptive.obj" && stdout_has adaptive-info "
 run adaptive-bad-out 1 adaptive "$meshes/cube.obj" -s catmull-clark --eps 0.01 -o "$work/out.xyz" &&
   stderr_one_line adaptive-bad-out
 
+# quasi 4-8: binary steps, --full-steps, tags from OBJ lines, the refusals.
+run refine-q48 0 refine "$data/tagged_octagon.obj" -s quasi-4-8 -l 4 --quasi-boundary smoothed -o "$work/q48.obj" --stats &&
+  stdout_has refine-q48 "level 1: 13 vertices, 16 faces" && stdout_has refine-q48 "level 4: 81 vertices, 128 faces"
+# The tagged vertices (0 and 1 on the crease, corner 5) have not moved.
+for v in "v 0 0 0" "v 1 0 0.2" "v -1 0 0.2"; do
+  grep -qxF "$v" "$work/q48.obj" && pass || fail "refine-q48: tagged vertex '$v' moved"
+done
+grep -qF "t crease 2/1/0" "$work/q48.obj" && pass || fail "refine-q48: crease tags not written"
+run refine-q48-full 0 refine "$data/tagged_octagon.obj" -s quasi-4-8 -l 2 --full-steps -o "$work/q48f.obj" --stats &&
+  stdout_has refine-q48-full "scheme quasi-4-8, 4 levels" && stdout_has refine-q48-full "level 4: 81 vertices, 128 faces"
+run refine-q48-crease 0 refine "$meshes/tetrahedron.obj" -s quasi-4-8 -l 3 --crease 0,1 --corner 2 -o "$work/q48t.obj" &&
+  stdout_has refine-q48-crease "wrote"
+run refine-q48-quads 1 refine "$meshes/cube.obj" -s quasi-4-8 -o "$work/x.obj" && stderr_one_line refine-q48-quads &&
+  stderr_has refine-q48-quads "quasi-4-8 needs a triangle mesh"
+run refine-q48-bad-crease 1 refine "$meshes/tetrahedron.obj" -s quasi-4-8 --crease 0,x -o "$work/x.obj" &&
+  stderr_one_line refine-q48-bad-crease
+run refine-full-steps-loop 1 refine "$meshes/tetrahedron.obj" -s loop --full-steps -o "$work/x.obj" &&
+  stderr_one_line refine-full-steps-loop && stderr_has refine-full-steps-loop "--full-steps applies to quasi-4-8"
+run limit-q48 1 limit "$meshes/tetrahedron.obj" -s quasi-4-8 -o "$work/x.obj" && stderr_one_line limit-q48
+
+run analyze-q48 0 analyze -s quasi-4-8 -k 3..6 &&
+  grep -qE "^3 +6 +3 +37 +0\.405113 +0\.405113 +0\.250000 .*Reif holds +regular: 1350 faces alike, winds once" "$work/out" &&
+  pass || fail "analyze quasi-4-8: n=3 row"
+run analyze-q48-json 1 analyze -s quasi-4-8 --json && stderr_one_line analyze-q48-json
+run analyze-warmup-loop 1 analyze -s loop --warmup 2 && stderr_one_line analyze-warmup-loop
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -20,6 +20,7 @@
 #include "scheme_option.h"
 #include "io/file_io.h"
 #include "plots.h"
+#include "quasi_4_8_analysis.h"
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/core/error.h"
 
@@ -45,6 +46,7 @@ struct AnalyzeCommandOptions {
   std::optional<double> flatness;
   std::optional<double> tension;
   DegreeOptionValues degree;
+  std::optional<int> warmup;  // quasi-4-8: binary steps before the matrix
 };
 
 int parse_int(std::string_view text, const std::string& what) {
@@ -144,6 +146,17 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
   }
   const Scheme selected = with_degree_options(with_tension(scheme_named(opt.scheme), opt.tension), opt.degree);
   const Scheme* scheme = &selected;
+  if (scheme->split == SplitRule::quasi_4_8) {  // no canonical ring meshes: the n-gon experiment
+    if (opt.boundary || !opt.corner.empty() || opt.json || !opt.plot_spectrum.empty() || opt.plot_charmap_given ||
+        opt.boundary_rules != "standard" || opt.flatness)
+      throw InvalidInputError(
+          "quasi-4-8 is analysed on n-regular neighbourhoods only: -k and --warmup, no --boundary, --corner, "
+          "--json, --boundary-rules, --flatness or plots");
+    Configuration interior;
+    const auto [first, last] = parse_k_range(opt.k.empty() ? "3..12" : opt.k, interior);
+    return run_quasi_4_8_analysis(first, last, opt.warmup.value_or(8));
+  }
+  if (opt.warmup) throw InvalidInputError("--warmup applies to quasi-4-8");
 
   Configuration base;
   if (opt.boundary) base.kind = Configuration::Kind::boundary;
@@ -270,6 +283,8 @@ Command add_analyze_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
   add_degree_options(*cmd, opt->degree);
+  cmd->add_option("--warmup", opt->warmup, "quasi-4-8: binary steps before the matrix is read (default 8)")
+      ->check(CLI::Range(0, 10));
   cmd->add_flag("--json", opt->json, "Print JSON (spectra, limit and tangent masks, layout) instead of the table");
   cmd->add_option("--plot-spectrum", opt->plot_spectrum, "Plot eigenvalue magnitudes against k (.svg or .png)")
       ->type_name("FILE");
@@ -291,6 +306,7 @@ Command add_analyze_command(CLI::App& app) {
       "  subdiv analyze -s cubic-bspline    (curve schemes: cubic-bspline, chaikin, four-point)\n"
       "  subdiv analyze -s gcc --alpha 0.3 --beta 0.4 -k 3..16   (with the paper's closed forms)\n"
       "  subdiv analyze -s midpoint --degree 6 -k 3..8\n"
+      "  subdiv analyze -s quasi-4-8 -k 3..12 --warmup 8   (n-regular neighbourhoods)\n"
       "  subdiv analyze -s catmull-clark --plot-spectrum /tmp/cc.svg --plot-charmap 5 /tmp/cc5.png");
   return [opt, charmap] {
     opt->plot_charmap_given = charmap->count() > 0;

@@ -2,6 +2,7 @@
 // of the registry, carrying vertex and face-varying data through; with a
 // curve scheme, refinement of the file's polylines (OBJ `l` lines).
 
+#include <charconv>
 #include <chrono>
 #include <algorithm>
 #include <cstdio>
@@ -42,7 +43,28 @@ struct RefineCommandOptions {
   std::optional<double> tension;
   RuleOptionValues rules;
   DegreeOptionValues degree;
+  bool full_steps = false;            // quasi-4-8: -l counts 4-8 steps (two binary steps each)
+  std::string quasi_boundary;         // quasi-4-8: fixed or smoothed
+  std::vector<std::string> creases;  // --crease A,B: infinitely sharp edge tags
 };
+
+// --crease A,B: the edge (A, B), 0-based, as an infinitely sharp crease tag.
+CreaseTag parse_crease(const std::string& text, Index vertex_count) {
+  const std::size_t comma = text.find(',');
+  long long v[2] = {-1, -1};
+  bool ok = comma != std::string::npos;
+  for (int i = 0; ok && i < 2; ++i) {
+    const std::string part = i == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v[i]);
+    ok = !part.empty() && ec == std::errc() && end == part.data() + part.size();
+  }
+  if (!ok) throw InvalidInputError("--crease " + text + ": expected A,B with two 0-based vertex indices");
+  for (const long long x : v)
+    if (x < 0 || x >= vertex_count)
+      throw InvalidInputError("--crease " + text + ": vertex " + std::to_string(x) + " is not in the mesh (" +
+                              std::to_string(vertex_count) + " vertices)");
+  return {static_cast<Index>(v[0]), static_cast<Index>(v[1]), kInfiniteSharpness};
+}
 
 /// The options only surface schemes read; a curve scheme refuses them
 /// rather than ignore them.
@@ -58,6 +80,9 @@ const char* surface_option_given(const RefineCommandOptions& opt) {
   if (opt.degree.degree) return "--degree";
   if (!opt.degree.alpha.empty() || !opt.degree.beta.empty()) return "--alpha/--beta";
   if (!opt.degree.valence_weights.empty()) return "--valence-weights";
+  if (!opt.creases.empty()) return "--crease";
+  if (opt.full_steps) return "--full-steps";
+  if (!opt.quasi_boundary.empty()) return "--quasi-boundary";
   return nullptr;
 }
 
@@ -158,9 +183,16 @@ int run_refine(const RefineCommandOptions& opt) {
     std::fprintf(stderr, "subdiv: warning: %s: %zu tags not interpreted (e.g. '%s'), carried through unchanged\n",
                  opt.input.c_str(), file.mesh.tags.other.size(), file.mesh.tags.other.front().name.c_str());
 
+  const bool quasi = scheme->split == SplitRule::quasi_4_8;
+  if (!quasi && opt.full_steps) throw InvalidInputError("--full-steps applies to quasi-4-8, not to " + opt.scheme);
+  if (!quasi && !opt.quasi_boundary.empty())
+    throw InvalidInputError("--quasi-boundary applies to quasi-4-8, not to " + opt.scheme);
   RefineOptions options;
   apply_rule_options(opt.rules, file.mesh, options);
-  options.levels = opt.levels;
+  for (const std::string& text : opt.creases)
+    file.mesh.tags.creases.push_back(parse_crease(text, file.mesh.vertex_count()));
+  options.levels = opt.full_steps ? 2 * opt.levels : opt.levels;
+  if (opt.quasi_boundary == "smoothed") options.quasi_4_8_boundary = Quasi48Boundary::smoothed;
   options.allow_non_manifold = opt.allow_non_manifold;
   options.threads = opt.threads;
   if (opt.boundary == "edge-only") options.boundary = BoundaryInterpolation::edge_only;
@@ -190,7 +222,7 @@ int run_refine(const RefineCommandOptions& opt) {
   const auto write_start = clock::now();
   print_warnings(opt.output, write_mesh(result, opt.output, wopt));
   if (opt.stats) {
-    std::printf("scheme %s, %d levels, threads %s\n", std::string(scheme->name).c_str(), opt.levels,
+    std::printf("scheme %s, %d levels, threads %s\n", std::string(scheme->name).c_str(), options.levels,
                 opt.threads > 0 ? std::to_string(opt.threads).c_str() : "all");
     std::printf("level 0: %d vertices, %d faces\n", file.mesh.vertex_count(), file.mesh.face_count());
     for (const auto& s : stats) std::printf("%s\n", s.c_str());
@@ -228,7 +260,9 @@ Command add_refine_command(CLI::App& app) {
   cmd->add_option("-s,--scheme", opt->scheme, "Scheme, surface or curve (see 'subdiv schemes')")->capture_default_str();
   cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
   add_degree_options(*cmd, opt->degree);
-  cmd->add_option("-l,--levels", opt->levels, "Refinement steps")->capture_default_str()->check(CLI::Range(0, 12));
+  cmd->add_option("-l,--levels", opt->levels, "Refinement steps (quasi-4-8: binary steps, see --full-steps)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 12));
   cmd->add_option("--boundary", opt->boundary,
                   "Boundary interpolation, overriding the file's tag (default: the tag, else edge-and-corner)")
       ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
@@ -243,6 +277,14 @@ Command add_refine_command(CLI::App& app) {
                 "Refine non-manifold or inconsistently oriented meshes, treating those elements as sharp");
   cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
   add_rule_options(*cmd, opt->rules);
+  cmd->add_option("--crease", opt->creases,
+                  "Tag edge A,B (0-based vertices) as infinitely sharp (repeatable); quasi-4-8 does not smooth it")
+      ->type_name("A,B");
+  cmd->add_flag("--full-steps", opt->full_steps,
+                "quasi-4-8: -l counts 4-8 steps, two binary steps each (default: binary steps)");
+  cmd->add_option("--quasi-boundary", opt->quasi_boundary,
+                  "quasi-4-8: boundary vertices fixed (default) or the boundary polygon smoothed")
+      ->check(CLI::IsMember({"fixed", "smoothed"}));
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
   cmd->add_flag("-q,--quiet", opt->quiet, "No progress lines on stderr");
   cmd->footer(
@@ -255,7 +297,8 @@ Command add_refine_command(CLI::App& app) {
       "  subdiv refine data/meshes/cube.obj -s loop --triangulate -l 4 -o /tmp/cube_loop.ply --stats\n"
       "  subdiv refine curve.obj -s four-point --tension 0.08 -l 4 -o /tmp/curve4.obj\n"
       "  subdiv refine data/meshes/cube.obj -s gcc --degree 5 --alpha 0.2,0.3 --beta 0.5,0.4 -l 3 -o /tmp/gcc5.obj\n"
-      "  subdiv refine data/meshes/cube.obj -s midpoint --degree 4 -l 3 -o /tmp/m4.obj");
+      "  subdiv refine data/meshes/cube.obj -s midpoint --degree 4 -l 3 -o /tmp/m4.obj\n"
+      "  subdiv refine data/meshes/tetrahedron.obj -s quasi-4-8 -l 3 --full-steps -o /tmp/tetra_q48.obj");
   return [opt] { return run_refine(*opt); };
 }
 

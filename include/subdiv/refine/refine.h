@@ -11,6 +11,7 @@
 #include "subdiv/mesh/source_lines.h"
 #include "subdiv/refine/stencil_table.h"
 #include "subdiv/refine/creasing.h"
+#include "subdiv/rules/quasi_4_8.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv {
@@ -62,6 +63,9 @@ struct RefineOptions {
   /// semi-sharp edges; creasing.h). The refined levels' tags then name this
   /// method, since their crease sharpness was subdivided by it.
   std::optional<CreaseMethod> crease_method;
+  /// quasi-4-8 only: whether boundary vertices stay in place or the boundary
+  /// polygon is smoothed (rules/quasi_4_8.h). `levels` counts binary steps.
+  Quasi48Boundary quasi_4_8_boundary = Quasi48Boundary::fixed;
 };
 
 /// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined

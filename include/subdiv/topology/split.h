@@ -16,6 +16,9 @@
 //   identity: the same faces and vertices (a smoothing step of a composite
 //     scheme, e.g. B_{alpha,beta} of generalized Catmull-Clark); child
 //     vertices are numbered as the parent's (vertex points).
+//   quasi 4-8 bisection (arity sqrt 2, Velho): a binary step whose split
+//     depends on the positions; not a split_topology() rule, see
+//     subdiv/topology/bisection_split.h.
 //
 // The child is a complete PolygonMesh (faces, tags, face-varying indices);
 // its positions and vertex channels are left for a scheme's masks to fill.
@@ -28,7 +31,7 @@
 
 namespace subdiv {
 
-enum class SplitRule { quad, triangle, dual, midedge, identity };
+enum class SplitRule { quad, triangle, dual, midedge, identity, quasi_4_8 };
 
 /// The primal splits keep the parent's vertices (as vertex points) and its
 /// sharp features; the analysis' vertex configurations, limit positions,
@@ -36,7 +39,7 @@ enum class SplitRule { quad, triangle, dual, midedge, identity };
 constexpr bool is_primal(SplitRule r) { return r == SplitRule::quad || r == SplitRule::triangle; }
 
 /// How much one step shrinks the faces' size: 2, sqrt 2 for the midedge
-/// split, 1 for the identity.
+/// split and the quasi 4-8 bisection, 1 for the identity.
 double arity(SplitRule r);
 
 const char* to_string(SplitRule);
