@@ -8,6 +8,7 @@
 #include "subdiv/rules/loop.h"
 #include "subdiv/rules/midedge.h"
 #include "subdiv/rules/scheme.h"
+#include "subdiv/rules/sqrt3.h"
 
 namespace subdiv {
 
@@ -22,10 +23,10 @@ const char* to_string(VertexRule r) {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 9> schemes = {
-      &catmull_clark_scheme(), &loop_scheme(),     &loop_warren_scheme(), &butterfly_scheme(),
-      &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(), &bilinear_scheme(),
-      &linear_scheme()};
+  static const std::array<const Scheme*, 10> schemes = {
+      &catmull_clark_scheme(), &loop_scheme(),      &loop_warren_scheme(), &butterfly_scheme(),
+      &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(),  &sqrt3_scheme(),
+      &bilinear_scheme(),      &linear_scheme()};
   return schemes;
 }
 

@@ -13,10 +13,16 @@ namespace subdiv {
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f) {
   if (rule == SplitRule::quad) return {parent.face_first_corner(f), parent.face_first_corner(f) + parent.face_size(f)};
   if (rule == SplitRule::dual || rule == SplitRule::midedge) return {f, f + 1};
+  if (rule == SplitRule::sqrt3)
+    throw InvalidInputError("the sqrt3 split's child faces belong to the parent's edges, not to its faces");
   return {4 * f, 4 * f + 4};
 }
 
-double arity(SplitRule r) { return r == SplitRule::midedge ? std::sqrt(2.0) : 2.0; }
+double arity(SplitRule r) {
+  if (r == SplitRule::midedge) return std::sqrt(2.0);
+  if (r == SplitRule::sqrt3) return std::sqrt(3.0);
+  return 2.0;
+}
 
 const char* to_string(SplitRule r) {
   switch (r) {
@@ -24,6 +30,7 @@ const char* to_string(SplitRule r) {
     case SplitRule::triangle: return "triangle split (TP, arity 2)";
     case SplitRule::dual: return "dual split (QD, arity 2)";
     case SplitRule::midedge: return "midedge split (QD, arity sqrt 2)";
+    case SplitRule::sqrt3: return "sqrt3 split (TP, arity sqrt 3)";
   }
   return "?";
 }
@@ -34,6 +41,20 @@ double child_sharpness(double s) {
   if (s >= kInfiniteSharpness) return s;
   return s > 1.0 ? s - 1.0 : 0.0;
 }
+
+namespace {
+
+void propagate_corners(const Tags& in, Index vertex_count, const SplitMap& map, Tags& out) {
+  for (const CornerTag& c : in.corners) {
+    CornerTag t = c;
+    t.sharpness = child_sharpness(c.sharpness);
+    if (t.sharpness <= 0.0 || c.vertex < 0 || c.vertex >= vertex_count) continue;
+    t.vertex = map.vertex_point(c.vertex);
+    out.corners.push_back(t);
+  }
+}
+
+}  // namespace
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
                     std::span<const double> child_end_sharpness, PolygonMesh& child) {
@@ -51,6 +72,10 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
   out.face_varying_propagate_corners = in.face_varying_propagate_corners;
   out.face_varying_propagate_corners_set = in.face_varying_propagate_corners_set;
   out.other = in.other;
+  if (map.rule == SplitRule::sqrt3) {  // vertices are kept, edges are not: corners only
+    propagate_corners(in, parent.vertex_count(), map, out);
+    return;
+  }
   if (!is_primal(map.rule)) return;  // no sharp features there (check_refinable)
 
   for (const CreaseTag& c : in.creases) {
@@ -68,13 +93,7 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
     if (s0 > 0.0) out.creases.push_back({map.vertex_point(c.v0), map.edge_point(e), s0});
     if (s1 > 0.0) out.creases.push_back({map.edge_point(e), map.vertex_point(c.v1), s1});
   }
-  for (const CornerTag& c : in.corners) {
-    CornerTag t = c;
-    t.sharpness = child_sharpness(c.sharpness);
-    if (t.sharpness <= 0.0 || c.vertex < 0 || c.vertex >= parent.vertex_count()) continue;
-    t.vertex = map.vertex_point(c.vertex);
-    out.corners.push_back(t);
-  }
+  propagate_corners(in, parent.vertex_count(), map, out);
   if (!in.holes.empty()) {
     // Child faces of increasing parents increase: sorted parents give sorted holes.
     std::vector<Index> holes = in.holes;
@@ -98,11 +117,12 @@ void require_edges(const MeshTopology& topology) {
 }  // namespace detail
 
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
-                        PolygonMesh& child, std::span<const double> child_end_sharpness) {
+                        PolygonMesh& child, std::span<const double> child_end_sharpness, int level) {
   detail::require_edges(topology);
   SplitMap map = rule == SplitRule::quad       ? detail::quad_split(topology, child)
                  : rule == SplitRule::triangle ? detail::triangle_split(topology, child)
                  : rule == SplitRule::dual     ? detail::dual_split(topology, child)
+                 : rule == SplitRule::sqrt3    ? detail::sqrt3_split(topology, child, level)
                                                : detail::midedge_split(topology, child);
   detail::propagate_tags(parent, topology, map, child_end_sharpness, child);
   // Vertex channels are the masks' to fill; face-varying ones split here.
@@ -114,6 +134,7 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
     if (rule == SplitRule::quad) detail::quad_split_face_varying(topology, in, out);
     else if (rule == SplitRule::triangle) detail::triangle_split_face_varying(topology, in, out);
     else if (rule == SplitRule::dual) detail::dual_split_face_varying(topology, map, child, in, out);
+    else if (rule == SplitRule::sqrt3) detail::sqrt3_split_face_varying(topology, map, child, in, out);
     else detail::midedge_split_face_varying(topology, child, in, out);
   }
   return map;

@@ -131,6 +131,16 @@ run refine-midedge-open 1 refine "$meshes/l_shape.obj" -s midedge -o "$work/x.ob
 run analyze-midedge 0 analyze -s midedge -k 3..6 && stdout_has analyze-midedge "period 2" &&
   stdout_has analyze-midedge "extraordinary face of k sides"
 grep -qE "^interior k=6 +24 +1 +0.750000 +0.750000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze midedge: k=6 row"
+run refine-sqrt3 0 refine "$meshes/cube.obj" -s sqrt3 --triangulate -l 3 -o "$work/s3.obj" --stats
+stdout_has refine-sqrt3 "level 1: 20 vertices, 36 faces" && stdout_has refine-sqrt3 "level 3: 164 vertices, 324 faces"
+run refine-sqrt3-open 0 refine "$meshes/l_shape.obj" -s sqrt3 --triangulate -l 2 -o "$work/s3l.obj"
+run refine-sqrt3-open-info 0 info "$work/s3l.obj" && stdout_has refine-sqrt3-open-info "validation      ok"
+run refine-sqrt3-quads 1 refine "$meshes/cube.obj" -s sqrt3 -o "$work/x.obj" && stderr_one_line refine-sqrt3-quads &&
+  stderr_has refine-sqrt3-quads "needs a triangle mesh"
+run analyze-sqrt3 0 analyze -s sqrt3 -k 3..12 && stdout_has analyze-sqrt3 "period 2"
+grep -qE "^interior k=6 +7 +1 +0.333333 +0.333333 +0.111111 .* C1 " "$work/out" && pass || fail "analyze sqrt3: k=6 row"
+[ "$(grep -cE "^interior k=[0-9]+ .* C1 " "$work/out")" = 10 ] && pass || fail "analyze sqrt3: not C1 at every valence"
+run analyze-sqrt3-boundary 0 analyze -s sqrt3 --boundary -k 3 && stdout_has analyze-sqrt3-boundary "0.333333  0.333333"
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold

@@ -222,7 +222,7 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
   const std::string text =
       opt.json ? analysis_json(scheme->name, results) : format_analysis_table(scheme->name, results);
   std::fwrite(text.data(), 1, text.size(), stdout);
-  if (!opt.json && !is_primal(scheme->split))
+  if (!opt.json && (scheme->split == SplitRule::dual || scheme->split == SplitRule::midedge))
     std::printf("(%s: interior k is an extraordinary face of k sides in a ring of quads)\n", to_string(scheme->split));
   if (!opt.json)
     for (const auto& [path, bytes] : plots) std::printf("wrote %s (%zu bytes)\n", path.c_str(), bytes.size());
