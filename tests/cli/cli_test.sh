@@ -141,6 +141,12 @@ run analyze-sqrt3 0 analyze -s sqrt3 -k 3..12 && stdout_has analyze-sqrt3 "perio
 grep -qE "^interior k=6 +7 +1 +0.333333 +0.333333 +0.111111 .* C1 " "$work/out" && pass || fail "analyze sqrt3: k=6 row"
 [ "$(grep -cE "^interior k=[0-9]+ .* C1 " "$work/out")" = 10 ] && pass || fail "analyze sqrt3: not C1 at every valence"
 run analyze-sqrt3-boundary 0 analyze -s sqrt3 --boundary -k 3 && stdout_has analyze-sqrt3-boundary "0.333333  0.333333"
+run refine-isqrt3 0 refine "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 -l 2 -o "$work/is3.obj" --stats
+stdout_has refine-isqrt3 "level 2: 20 vertices, 36 faces"
+run refine-isqrt3-open 1 refine "$meshes/l_shape.obj" -s interpolatory-sqrt3 --triangulate -o "$work/x.obj" &&
+  stderr_one_line refine-isqrt3-open && stderr_has refine-isqrt3-open "needs a closed mesh"
+run analyze-isqrt3 0 analyze -s interpolatory-sqrt3 -k 3..8 --no-charmap &&
+  grep -qE "^interior k=6 +37 +3 +0.333333 +0.333333 " "$work/out" && pass || fail "analyze interpolatory-sqrt3: k=6 row"
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold
