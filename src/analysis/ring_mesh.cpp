@@ -201,9 +201,42 @@ std::vector<Vec3> sqrt3_child_layout(const RingMesh& ring, int levels) {
   return second.positions;
 }
 
+// Two sqrt2 steps make the quad split of the layout, back in its
+// orientation: the layout point p's descendant is at p / 2 within a sector.
+// The first step's face points are face centroids (each within a sector);
+// the second step's belong to the quads (a, point(G), b, point(F)) of the
+// old edges (a, b), which straddle a ray where the edge lies on one, and are
+// placed at the edge's midpoint.
+std::vector<Vec3> sqrt2_child_layout(const RingMesh& ring, int levels) {
+  if (levels != 2)
+    throw InvalidInputError("child layout: the sqrt2 split is identified after two steps, not " +
+                            std::to_string(levels));
+  RefineOptions twice;
+  twice.levels = 2;
+  PolygonMesh first;
+  twice.on_level = [&](int level, const PolygonMesh& mesh) {
+    if (level == 1) first = mesh;
+  };
+  PolygonMesh second = refine(ring.mesh, layout_placement(SplitRule::sqrt2), twice);
+  const Index face_points1 = ring.mesh.face_count();
+  for (Index f = 0; f < first.face_count(); ++f) {  // second-step face point f
+    Vec3 sum;
+    int old = 0;
+    for (const Index v : first.face(f))
+      if (v >= face_points1) {
+        sum += ring.mesh.positions[static_cast<std::size_t>(v - face_points1)];
+        ++old;
+      }
+    if (first.face_size(f) == 4 && old == 2) second.positions[static_cast<std::size_t>(f)] = 0.5 * sum;
+  }
+  return second.positions;
+}
+
 }  // namespace
 
 const Scheme& layout_placement(SplitRule split) {
+  static const Scheme sqrt2{"sqrt2-placement", "", "", SplitRule::sqrt2, false, centroid_placement, nullptr, kept_placement};
+  if (split == SplitRule::sqrt2) return sqrt2;
   static const Scheme sqrt3 = [] {
     Scheme s{"sqrt3-placement", "", "", SplitRule::sqrt3, true, centroid_placement, nullptr, kept_placement};
     s.boundary_point = third_placement;
@@ -226,6 +259,7 @@ std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels
   if (levels < 1) throw InvalidInputError("child layout: levels must be >= 1, not " + std::to_string(levels));
   if (split == SplitRule::midedge) return midedge_child_layout(ring, levels);
   if (split == SplitRule::sqrt3) return sqrt3_child_layout(ring, levels);
+  if (split == SplitRule::sqrt2) return sqrt2_child_layout(ring, levels);
   if (split != SplitRule::dual) {
     RefineOptions down;
     down.levels = levels;
@@ -289,7 +323,7 @@ RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int ring
   GridPoints points(k, closed, angle, ring.mesh);
   ring.centre = points.at(0, 0, 0);
   for (int s = 0; s < k; ++s) {
-    if (split == SplitRule::quad) {
+    if (split == SplitRule::quad || split == SplitRule::sqrt2) {
       for (int i = 0; i < rings; ++i)
         for (int j = 0; j < rings; ++j)
           ring.mesh.add_face({points.at(s, i, j), points.at(s, i + 1, j), points.at(s, i + 1, j + 1), points.at(s, i, j + 1)});

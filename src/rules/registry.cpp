@@ -4,6 +4,7 @@
 #include "subdiv/rules/butterfly.h"
 #include "subdiv/rules/catmull_clark.h"
 #include "subdiv/rules/doo_sabin.h"
+#include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/interpolatory_sqrt3.h"
 #include "subdiv/rules/linear.h"
 #include "subdiv/rules/loop.h"
@@ -24,10 +25,10 @@ const char* to_string(VertexRule r) {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 11> schemes = {
+  static const std::array<const Scheme*, 12> schemes = {
       &catmull_clark_scheme(), &loop_scheme(),      &loop_warren_scheme(), &butterfly_scheme(),
       &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(),  &sqrt3_scheme(),
-      &interpolatory_sqrt3_scheme(), &bilinear_scheme(), &linear_scheme()};
+      &interpolatory_sqrt3_scheme(), &four_eight_scheme(), &bilinear_scheme(), &linear_scheme()};
   return schemes;
 }
 

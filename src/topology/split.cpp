@@ -13,13 +13,13 @@ namespace subdiv {
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f) {
   if (rule == SplitRule::quad) return {parent.face_first_corner(f), parent.face_first_corner(f) + parent.face_size(f)};
   if (rule == SplitRule::dual || rule == SplitRule::midedge) return {f, f + 1};
-  if (rule == SplitRule::sqrt3)
-    throw InvalidInputError("the sqrt3 split's child faces belong to the parent's edges, not to its faces");
+  if (rule == SplitRule::sqrt3 || rule == SplitRule::sqrt2)
+    throw InvalidInputError(std::string(to_string(rule)) + ": child faces belong to the parent's edges, not to its faces");
   return {4 * f, 4 * f + 4};
 }
 
 double arity(SplitRule r) {
-  if (r == SplitRule::midedge) return std::sqrt(2.0);
+  if (r == SplitRule::midedge || r == SplitRule::sqrt2) return std::sqrt(2.0);
   if (r == SplitRule::sqrt3) return std::sqrt(3.0);
   return 2.0;
 }
@@ -31,6 +31,7 @@ const char* to_string(SplitRule r) {
     case SplitRule::dual: return "dual split (QD, arity 2)";
     case SplitRule::midedge: return "midedge split (QD, arity sqrt 2)";
     case SplitRule::sqrt3: return "sqrt3 split (TP, arity sqrt 3)";
+    case SplitRule::sqrt2: return "sqrt2 split (QP, arity sqrt 2)";
   }
   return "?";
 }
@@ -123,6 +124,7 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
                  : rule == SplitRule::triangle ? detail::triangle_split(topology, child)
                  : rule == SplitRule::dual     ? detail::dual_split(topology, child)
                  : rule == SplitRule::sqrt3    ? detail::sqrt3_split(topology, child, level)
+                 : rule == SplitRule::sqrt2    ? detail::sqrt2_split(topology, child)
                                                : detail::midedge_split(topology, child);
   detail::propagate_tags(parent, topology, map, child_end_sharpness, child);
   // Vertex channels are the masks' to fill; face-varying ones split here.
@@ -135,6 +137,7 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
     else if (rule == SplitRule::triangle) detail::triangle_split_face_varying(topology, in, out);
     else if (rule == SplitRule::dual) detail::dual_split_face_varying(topology, map, child, in, out);
     else if (rule == SplitRule::sqrt3) detail::sqrt3_split_face_varying(topology, map, child, in, out);
+    else if (rule == SplitRule::sqrt2) detail::sqrt2_split_face_varying(topology, map, child, in, out);
     else detail::midedge_split_face_varying(topology, child, in, out);
   }
   return map;

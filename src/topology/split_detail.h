@@ -14,6 +14,7 @@ SplitMap dual_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap midedge_split(const MeshTopology& topology, PolygonMesh& child);
 /// `level`: the parent's level, whose parity says whether the step trisects.
 SplitMap sqrt3_split(const MeshTopology& topology, PolygonMesh& child, int level);
+SplitMap sqrt2_split(const MeshTopology& topology, PolygonMesh& child);
 
 /// Face-varying values linear within each face, for the child's corners.
 void quad_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);
@@ -29,6 +30,10 @@ void midedge_split_face_varying(const MeshTopology& topology, const PolygonMesh&
 
 /// Sqrt3 split: one value per child vertex (sqrt3_split.cpp).
 void sqrt3_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
+                              const FaceVaryingChannel& in, FaceVaryingChannel& out);
+
+/// Sqrt2 split: one value per child vertex (sqrt2_split.cpp).
+void sqrt2_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
                               const FaceVaryingChannel& in, FaceVaryingChannel& out);
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,

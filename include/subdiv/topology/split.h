@@ -18,6 +18,9 @@
 //     even ones; child vertices are numbered [face points | boundary points,
 //     two per boundary edge on even steps | vertex points]
 //     (src/topology/sqrt3_split.cpp).
+//   sqrt2 split (QP, arity sqrt 2, 4-8 on quads): a face point per face, a
+//     quad per edge, the old edges dropped; child vertices are numbered
+//     [face points | vertex points] (src/topology/sqrt2_split.cpp).
 //
 // The child is a complete PolygonMesh (faces, tags, face-varying indices);
 // its positions and vertex channels are left for a scheme's masks to fill.
@@ -30,7 +33,7 @@
 
 namespace subdiv {
 
-enum class SplitRule { quad, triangle, dual, midedge, sqrt3 };
+enum class SplitRule { quad, triangle, dual, midedge, sqrt3, sqrt2 };
 
 /// The primal splits keep the parent's vertices (as vertex points) and its
 /// sharp features; the analysis' vertex configurations, limit positions,
@@ -41,8 +44,8 @@ constexpr bool is_primal(SplitRule r) { return r == SplitRule::quad || r == Spli
 /// trisects the boundary edges: every second step, the first one does not.
 bool sqrt3_step_trisects(int level);
 
-/// How much one step shrinks the faces' size: 2, sqrt 2 for the midedge
-/// split, sqrt 3 for the sqrt3 split.
+/// How much one step shrinks the faces' size: 2, sqrt 2 for the midedge and
+/// sqrt2 splits, sqrt 3 for the sqrt3 split.
 double arity(SplitRule r);
 
 const char* to_string(SplitRule);
@@ -86,7 +89,8 @@ bool dual_split_has_v_face(const MeshTopology& topology, Index v);
 /// The child faces of parent face f, [first, last): the quad split makes one
 /// per corner (child face = parent corner), the triangle split 4f .. 4f+3,
 /// the dual and midedge splits one (child face f, its F-face). The sqrt3
-/// split's child faces belong to edges, not faces: throws InvalidInputError.
+/// and sqrt2 splits' child faces belong to edges, not faces: throws
+/// InvalidInputError.
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f);
 
 /// The child level's faces, tags (crease and corner sharpness decremented by
