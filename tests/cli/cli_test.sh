@@ -149,7 +149,8 @@ run analyze-isqrt3 0 analyze -s interpolatory-sqrt3 -k 3..8 --no-charmap &&
   grep -qE "^interior k=6 +37 +3 +0.333333 +0.333333 " "$work/out" && pass || fail "analyze interpolatory-sqrt3: k=6 row"
 run refine-four-eight 0 refine "$meshes/cube.obj" -s four-eight -l 2 -o "$work/48.obj" --stats
 stdout_has refine-four-eight "level 1: 14 vertices, 12 faces" && stdout_has refine-four-eight "level 2: 26 vertices, 24 faces"
-run refine-four-eight-open 1 refine "$meshes/l_shape.obj" -s four-eight -o "$work/x.obj" &&
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/quad.obj"
+run refine-four-eight-open 1 refine "$work/quad.obj" -s four-eight -o "$work/x.obj" &&
   stderr_one_line refine-four-eight-open && stderr_has refine-four-eight-open "needs a closed mesh"
 run analyze-four-eight 0 analyze -s four-eight -k 3..8 && stdout_has analyze-four-eight "period 2"
 grep -qE "^interior k=4 +25 +2 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze four-eight: k=4 row"
