@@ -67,7 +67,8 @@ Index apex_across(const MeshTopology& t, Index c) {
 
 bool regular(const MeshTopology& t, Index v) { return t.vertex_kind(v) != VertexKind::interior || t.valence(v) == 6; }
 
-// The 12-point rule; false where a neighbour it needs is missing.
+// The 12-point rule; false (and nothing added) where a neighbour it needs
+// is missing.
 bool add_regular_rule(const MeshTopology& t, Index f, MaskBuilder& mask) {
   const Index first = t.face_first_corner(f);
   Index outer[9];
@@ -109,13 +110,8 @@ void face_point(const LevelView& level, Index f, MaskBuilder& mask) {
   int irregular = 0;
   for (Index c = first; c < first + 3; ++c) irregular += !regular(t, t.corner_vertex(c));
   if (irregular == 0) {
-    MaskBuilder regular_mask;
-    if (add_regular_rule(t, f, regular_mask)) {
-      for (std::size_t i = 0; i < regular_mask.vertices().size(); ++i)
-        mask.add(regular_mask.vertices()[i], regular_mask.weights()[i]);
-      return;
-    }
-    detail::add_face_average(level, f, 1.0, mask);  // at the analysis ring's outer boundary
+    // add_regular_rule finds all its vertices before adding any.
+    if (!add_regular_rule(t, f, mask)) detail::add_face_average(level, f, 1.0, mask);  // the analysis ring's rim
     return;
   }
   for (Index c = first; c < first + 3; ++c)

@@ -25,6 +25,7 @@
 
 #include "subdiv/rules/sqrt3.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -32,7 +33,22 @@
 
 namespace subdiv {
 
-double sqrt3_alpha(int n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; }
+namespace {
+
+double sqrt3_alpha_formula(int n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; }
+
+}  // namespace
+
+double sqrt3_alpha(int n) {
+  // Tabulated for the usual valences (a cosine per vertex shows in profiles,
+  // as for Loop's beta); the table holds the formula's own values.
+  static const auto table = [] {
+    std::array<double, 64> t{};
+    for (int j = 1; j < static_cast<int>(t.size()); ++j) t[static_cast<std::size_t>(j)] = sqrt3_alpha_formula(j);
+    return t;
+  }();
+  return n > 0 && n < static_cast<int>(table.size()) ? table[static_cast<std::size_t>(n)] : sqrt3_alpha_formula(n);
+}
 
 namespace {
 
