@@ -154,6 +154,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
     else if (scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
     else if (scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
     else if (scheme.split == SplitRule::sqrt3) topology = MeshTopology::from_sqrt3_split(*topology, level.child);
+    else if (scheme.split == SplitRule::sqrt2) topology = MeshTopology::from_sqrt2_split(*topology, level.child);
     else topology.reset();  // built from the child's faces
     current = std::move(level.child);
     if (options.on_level) options.on_level(l + 1, current);

@@ -236,5 +236,34 @@ TEST(DerivedTopology, Sqrt3SplitMatchesTheGenericBuild) {
   EXPECT_FALSE(MeshTopology::from_sqrt3_split(t, child).has_value());
 }
 
+// The same for the sqrt2 split, on closed polygon meshes (the cube's quads,
+// a mix of triangles and quads).
+TEST(DerivedTopology, Sqrt2SplitMatchesTheGenericBuild) {
+  std::vector<std::pair<std::string, PolygonMesh>> cases;
+  cases.emplace_back("cube", test::cube());
+  cases.emplace_back("tetrahedron", test::tetrahedron());
+  PolygonMesh with_isolated = test::cube();
+  with_isolated.positions.push_back({9, 9, 9});
+  cases.emplace_back("isolated vertex", with_isolated);
+  for (const auto& [name, mesh] : cases) {
+    PolygonMesh parent = mesh;
+    std::optional<MeshTopology> topology = MeshTopology(parent);
+    for (int level = 0; level < 4; ++level) {
+      PolygonMesh child;
+      split_topology(parent, *topology, SplitRule::sqrt2, child);
+      const std::optional<MeshTopology> derived = MeshTopology::from_sqrt2_split(*topology, child);
+      ASSERT_TRUE(derived.has_value()) << name;
+      EXPECT_TRUE(*derived == MeshTopology(child)) << name << " level " << level;
+      parent = std::move(child);
+      topology = derived;
+    }
+  }
+  const PolygonMesh open = test::quad_grid(3, 2);
+  const MeshTopology t(open);
+  PolygonMesh child;
+  split_topology(open, t, SplitRule::sqrt2, child);
+  EXPECT_FALSE(MeshTopology::from_sqrt2_split(t, child).has_value());
+}
+
 }  // namespace
 }  // namespace subdiv
