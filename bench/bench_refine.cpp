@@ -55,6 +55,15 @@ BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, butterfly, "butterfly")->Args({158, 
 BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, modified_butterfly, "modified-butterfly")
     ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The sqrt3 schemes (three faces per face and step: level 4 from 50k
+// triangles, 4M faces) against Loop, and 4-8 (two faces per face and step:
+// level 6 from 25k quads, 1.6M faces) against Catmull-Clark; items are
+// output faces, so rates compare per output face.
+BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, sqrt3, "sqrt3")->Args({158, 4, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, interpolatory_sqrt3, "interpolatory-sqrt3")
+    ->Args({158, 4, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_QuadScheme, four_eight, "four-eight")->Args({158, 6, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Stencil path: build the table once (coarse -> level 2; arguments: mesh
 // size, levels, threads), then re-apply it to new positions, as for animation.
 void BM_StencilBuild_CatmullClark(benchmark::State& state) {

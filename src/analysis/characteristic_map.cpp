@@ -72,6 +72,62 @@ std::vector<Index> single_outline(const PolygonMesh& mesh) {
   return loop.size() == next.size() ? loop : std::vector<Index>{};
 }
 
+// Keeps the faces of the image joined to the centre across edges. Away from
+// the centre the valid region can have islands (sqrt3: small patches around
+// outer neighbourhood vertices, whose few descendants depend on the
+// neighbourhood alone); the criterion is about the map around the centre.
+void keep_centre_component(CharacteristicMap& map, const PolygonMesh& layout, const std::vector<Index>& kept) {
+  Index centre = kInvalidIndex;
+  for (Index v = 0; v < layout.vertex_count() && centre == kInvalidIndex; ++v)
+    if (norm(layout.positions[static_cast<std::size_t>(v)]) < 1e-12) centre = kept[static_cast<std::size_t>(v)];
+  if (centre == kInvalidIndex) return;
+  const Index nf = map.image.face_count();
+  std::map<std::pair<Index, Index>, std::vector<Index>> edge_faces;
+  for (Index f = 0; f < nf; ++f) {
+    const auto face = map.image.face(f);
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const Index a = face[i], b = face[(i + 1) % face.size()];
+      edge_faces[{std::min(a, b), std::max(a, b)}].push_back(f);
+    }
+  }
+  std::vector<char> reached(static_cast<std::size_t>(nf), 0);
+  std::vector<Index> stack;
+  for (Index f = 0; f < nf; ++f) {
+    const auto face = map.image.face(f);
+    if (std::find(face.begin(), face.end(), centre) != face.end()) {
+      reached[static_cast<std::size_t>(f)] = 1;
+      stack.push_back(f);
+    }
+  }
+  while (!stack.empty()) {
+    const Index f = stack.back();
+    stack.pop_back();
+    const auto face = map.image.face(f);
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const Index a = face[i], b = face[(i + 1) % face.size()];
+      for (const Index g : edge_faces[{std::min(a, b), std::max(a, b)}])
+        if (!reached[static_cast<std::size_t>(g)]) {
+          reached[static_cast<std::size_t>(g)] = 1;
+          stack.push_back(g);
+        }
+    }
+  }
+  if (std::count(reached.begin(), reached.end(), 1) == nf) return;
+  PolygonMesh image;
+  image.positions = map.image.positions;
+  std::vector<int> sector, orientation;
+  for (Index f = 0; f < nf; ++f) {
+    if (!reached[static_cast<std::size_t>(f)]) continue;
+    const auto face = map.image.face(f);
+    image.add_face(std::vector<Index>(face.begin(), face.end()));
+    sector.push_back(map.face_sector[static_cast<std::size_t>(f)]);
+    orientation.push_back(map.face_orientation[static_cast<std::size_t>(f)]);
+  }
+  map.image = std::move(image);
+  map.face_sector = std::move(sector);
+  map.face_orientation = std::move(orientation);
+}
+
 }  // namespace
 
 CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisionMatrix& matrix,
@@ -159,6 +215,7 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
     map.note = "no face of the ring depends on the neighbourhood alone";
     return map;
   }
+  keep_centre_component(map, layout, kept);
 
   // Faces against the majority orientation, or degenerate, make it irregular.
   const auto positive = std::count(map.face_orientation.begin(), map.face_orientation.end(), 1);

@@ -143,9 +143,106 @@ std::vector<Vec3> midedge_child_layout(const RingMesh& ring, int levels) {
   return second.positions;
 }
 
+// The sqrt3 split's linear placement: face centroids, vertices kept,
+// boundary points at the thirds of their edges.
+void centroid_placement(const LevelView& level, Index f, MaskBuilder& mask) {
+  const auto face = level.topology.face_vertices(f);
+  for (const Index v : face) mask.add(v, 1.0 / static_cast<double>(face.size()));
+}
+
+void kept_placement(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
+
+void third_placement(const LevelView& level, Index edge, Index vertex, MaskBuilder& mask) {
+  mask.add(vertex, 2.0 / 3.0);
+  mask.add(level.topology.other_vertex(edge, vertex), 1.0 / 3.0);
+}
+
+// Two sqrt3 steps split every triangle 1-to-9, aligned with it: the layout
+// point p's descendant is at p / 3 within a sector. The placement puts the
+// first step's face points (centroids of faces, each within a sector) and
+// the second step's boundary points (thirds of the old boundary edges) there
+// already; the second step's face points belong to the triangles (a,
+// point(F), point(G)) of the old edges (a, b) between faces F and G, which
+// straddle the ray of a sector boundary, and are placed at (2 a + b) / 3.
+std::vector<Vec3> sqrt3_child_layout(const RingMesh& ring, int levels) {
+  if (levels != 2)
+    throw InvalidInputError("child layout: the sqrt3 split is identified after two steps, not " +
+                            std::to_string(levels));
+  PolygonMesh first;
+  RefineOptions twice;
+  twice.levels = 2;
+  twice.on_level = [&](int level, const PolygonMesh& mesh) {
+    if (level == 1) first = mesh;
+  };
+  PolygonMesh second = refine(ring.mesh, layout_placement(SplitRule::sqrt3), twice);
+  const MeshTopology t0(ring.mesh), t1(first);
+  const Index face_points1 = t0.face_count();  // the first step gives every face a point
+  Index point = 0;                            // the second step's face points, in face order
+  for (Index f = 0; f < t1.face_count(); ++f) {
+    bool boundary = false;
+    for (Index c = t1.face_first_corner(f); c < t1.face_first_corner(f) + 3; ++c)
+      boundary = boundary || t1.is_boundary_edge(t1.corner_edge(c));
+    if (boundary) continue;
+    Index a = kInvalidIndex, faces[2] = {kInvalidIndex, kInvalidIndex};
+    int n = 0;
+    for (const Index v : t1.face_vertices(f)) {
+      if (v >= face_points1) a = v - face_points1;
+      else if (n < 2) faces[n++] = v;
+    }
+    if (a == kInvalidIndex || n != 2) throw InvalidInputError("child layout: a sqrt3 triangle without one old vertex");
+    Index b = kInvalidIndex;
+    for (const Index u : t0.face_vertices(faces[0]))
+      for (const Index w : t0.face_vertices(faces[1]))
+        if (u == w && u != a) b = u;
+    if (b == kInvalidIndex) throw InvalidInputError("child layout: a sqrt3 triangle's faces share no edge");
+    second.positions[static_cast<std::size_t>(point++)] =
+        (1.0 / 3.0) * (2.0 * ring.mesh.positions[static_cast<std::size_t>(a)] + ring.mesh.positions[static_cast<std::size_t>(b)]);
+  }
+  return second.positions;
+}
+
+// Two sqrt2 steps make the quad split of the layout, back in its
+// orientation: the layout point p's descendant is at p / 2 within a sector.
+// The first step's face points are face centroids (each within a sector);
+// the second step's belong to the quads (a, point(G), b, point(F)) of the
+// old edges (a, b), which straddle a ray where the edge lies on one, and are
+// placed at the edge's midpoint.
+std::vector<Vec3> sqrt2_child_layout(const RingMesh& ring, int levels) {
+  if (levels != 2)
+    throw InvalidInputError("child layout: the sqrt2 split is identified after two steps, not " +
+                            std::to_string(levels));
+  RefineOptions twice;
+  twice.levels = 2;
+  PolygonMesh first;
+  twice.on_level = [&](int level, const PolygonMesh& mesh) {
+    if (level == 1) first = mesh;
+  };
+  PolygonMesh second = refine(ring.mesh, layout_placement(SplitRule::sqrt2), twice);
+  const Index face_points1 = ring.mesh.face_count();
+  for (Index f = 0; f < first.face_count(); ++f) {  // second-step face point f
+    Vec3 sum;
+    int old = 0;
+    for (const Index v : first.face(f))
+      if (v >= face_points1) {
+        sum += ring.mesh.positions[static_cast<std::size_t>(v - face_points1)];
+        ++old;
+      }
+    if (first.face_size(f) == 4 && old == 2) second.positions[static_cast<std::size_t>(f)] = 0.5 * sum;
+  }
+  return second.positions;
+}
+
 }  // namespace
 
 const Scheme& layout_placement(SplitRule split) {
+  static const Scheme sqrt2{"sqrt2-placement", "", "", SplitRule::sqrt2, false, centroid_placement, nullptr, kept_placement};
+  if (split == SplitRule::sqrt2) return sqrt2;
+  static const Scheme sqrt3 = [] {
+    Scheme s{"sqrt3-placement", "", "", SplitRule::sqrt3, true, centroid_placement, nullptr, kept_placement};
+    s.boundary_point = third_placement;
+    return s;
+  }();
+  if (split == SplitRule::sqrt3) return sqrt3;
   static const Scheme dual{"dual-placement", "", "", SplitRule::dual, false, nullptr, nullptr, nullptr, nullptr,
                            dual_placement, dual_boundary_placement};
   static const Scheme midedge = [] {
@@ -161,6 +258,8 @@ const Scheme& layout_placement(SplitRule split) {
 std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels) {
   if (levels < 1) throw InvalidInputError("child layout: levels must be >= 1, not " + std::to_string(levels));
   if (split == SplitRule::midedge) return midedge_child_layout(ring, levels);
+  if (split == SplitRule::sqrt3) return sqrt3_child_layout(ring, levels);
+  if (split == SplitRule::sqrt2) return sqrt2_child_layout(ring, levels);
   if (split != SplitRule::dual) {
     RefineOptions down;
     down.levels = levels;
@@ -228,7 +327,7 @@ RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int ring
   GridPoints points(k, closed, angle, ring.mesh);
   ring.centre = points.at(0, 0, 0);
   for (int s = 0; s < k; ++s) {
-    if (split == SplitRule::quad) {
+    if (split == SplitRule::quad || split == SplitRule::sqrt2) {
       for (int i = 0; i < rings; ++i)
         for (int j = 0; j < rings; ++j)
           ring.mesh.add_face({points.at(s, i, j), points.at(s, i + 1, j), points.at(s, i + 1, j + 1), points.at(s, i, j + 1)});

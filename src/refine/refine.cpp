@@ -39,10 +39,11 @@ struct ParentLevel {
   const LevelCreasing& creasing;
   std::span<const double> sector_angle;  ///< piecewise-smooth rules only
   SchemeParameters parameters;
+  int level = 0;  ///< the parent's, 0 for the control mesh
   // The masks' views, built once per level rather than per child vertex.
-  LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle, {}, parameters};
+  LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle, {}, parameters, level, creasing.vertex_rule};
   LevelView below{topology, creasing.edge_sharpness, 1.0, sector_angle, creasing.child_edge_sharpness,  // Chaikin: per edge end
-                  parameters};
+                  parameters, level, creasing.child_vertex_rule};
   const LevelView& view() const { return here; }
   const LevelView& child_view() const { return below; }  // one level down
 };
@@ -58,7 +59,12 @@ void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap&
     const Index e = map.boundary_edges[static_cast<std::size_t>(boundary)];
     return scheme.boundary_point(view, e, view.topology.edge_vertices(e)[(i - map.edge_points) % 2], mask);
   }
-  if (i < map.edge_points) return scheme.face_point(view, i - map.face_points, mask);
+  if (i < map.edge_points) return scheme.face_point(view, map.point_face(i - map.face_points), mask);
+  if (map.rule == SplitRule::sqrt3 && i < map.vertex_points) {  // boundary points, as the dual split's
+    const Index boundary = (i - map.edge_points) / 2;
+    const Index e = map.boundary_edges[static_cast<std::size_t>(boundary)];
+    return scheme.boundary_point(view, e, view.topology.edge_vertices(e)[(i - map.edge_points) % 2], mask);
+  }
   if (i < map.vertex_points) {
     const Index e = i - map.edge_points;
     if (edge_sharpness_of(parent.creasing, e) <= 0.0) return scheme.edge_point(view, e, EdgeRule::smooth, mask);
@@ -118,20 +124,20 @@ struct Level {
 // One step: the child's faces and tags, then `fn` with the parent level and
 // its creasing for the masks.
 template <typename Fn>
-Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const Scheme& scheme,
+Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& scheme,
                   BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options, Fn&& fn) {
   const LevelCreasing creasing = compute_creasing(parent, topology, boundary, method);
   std::vector<double> sector_angle;
   if (options.boundary_rules == BoundaryRules::piecewise_smooth)
     sector_angle = detail::sector_angles(parent, topology, creasing);
   Level level;
-  level.map = split_topology(parent, topology, scheme.split, level.child, creasing.child_edge_sharpness);
+  level.map = split_topology(parent, topology, scheme.split, level.child, creasing.child_edge_sharpness, l);
   if (level.child.tags.crease_method != method) {  // overridden: the child's tags say how they were made
     level.child.tags.crease_method = method;
     level.child.tags.crease_method_set = true;
   }
   level.flatness = detail::flatness_sites(scheme, topology, creasing, sector_angle, level.map, options);
-  fn(ParentLevel{parent, topology, creasing, sector_angle, scheme.parameters}, level);
+  fn(ParentLevel{parent, topology, creasing, sector_angle, scheme.parameters, l}, level);
   return level;
 }
 
@@ -145,10 +151,10 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, const
 // steps, identity splits of R's quad mesh; A, a dual split of the level's
 // parent whose masks weight the quad mesh's vertices.
 template <typename Fn>
-Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, const Scheme& scheme,
+Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& scheme,
                    BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options, Fn&& fn) {
   if (!scheme.steps)
-    return refine_step(parent, topology, scheme, boundary, method, options,
+    return refine_step(parent, topology, l, scheme, boundary, method, options,
                        [&](const ParentLevel& view, Level& level) { fn(view, scheme, parent, level, true); });
   const std::vector<Scheme> steps = scheme.steps(scheme.parameters);
   Level level;
@@ -161,18 +167,18 @@ Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, cons
       return [&fn, &step, &values, first](const ParentLevel& view, Level& lv) { fn(view, step, values, lv, first); };
     };
     if (step.split == SplitRule::quad) {
-      level = refine_step(parent, topology, step, boundary, method, options, evaluate(parent));
+      level = refine_step(parent, topology, l, step, boundary, method, options, evaluate(parent));
       if (i + 1 < steps.size()) {
         quads = MeshTopology::from_quad_split(topology, level.child);
         if (!quads) quads.emplace(level.child);
       }
     } else if (step.split == SplitRule::identity && quads) {
       source = std::move(level.child);
-      level = refine_step(source, *quads, step, boundary, method, options, evaluate(source));
+      level = refine_step(source, *quads, l, step, boundary, method, options, evaluate(source));
       if (i + 1 == steps.size()) level.child_topology = std::move(quads);  // the same faces
     } else if (step.split == SplitRule::dual && quads) {
       source = std::move(level.child);
-      level = refine_step(parent, topology, step, boundary, method, options, evaluate(source));
+      level = refine_step(parent, topology, l, step, boundary, method, options, evaluate(source));
     } else {
       throw InvalidInputError(std::string(scheme.name) + ": a composite scheme's steps are a quad split, then " +
                               "identity splits, then at most one dual split");
@@ -193,11 +199,13 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
   std::optional<MeshTopology> topology = std::move(coarse_topology);
   for (int l = 0; l < options.levels; ++l) {
     if (!topology) topology.emplace(current);
-    Level level = step(current, *topology);
+    Level level = step(current, *topology, l);
     if (l + 1 == options.levels) topology.reset();
     else if (level.child_topology) topology = std::move(level.child_topology);
     else if (scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
     else if (scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
+    else if (scheme.split == SplitRule::sqrt3) topology = MeshTopology::from_sqrt3_split(*topology, level.child);
+    else if (scheme.split == SplitRule::sqrt2) topology = MeshTopology::from_sqrt2_split(*topology, level.child);
     else topology.reset();  // built from the child's faces
     current = std::move(level.child);
     if (options.on_level) options.on_level(l + 1, current);
@@ -312,8 +320,9 @@ std::string where(const SourceLines* lines, const std::vector<std::uint32_t> Sou
   return lines->path + (line ? ":" + std::to_string(line) : "") + ": ";
 }
 
-// The dual and midedge splits have no rules for sharp features, holes or
-// non-manifold elements: refuse them, naming the tag's line.
+// The dual, midedge and sqrt3 splits have no rules for sharp features
+// (sqrt3: but corners), holes or non-manifold elements: refuse them, naming
+// the tag's line.
 void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                              const SourceLines* lines) {
   const std::string name(scheme.name);
@@ -325,7 +334,8 @@ void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, cons
       throw InvalidInputError(where(lines, &SourceLines::crease_lines, i) + name + " has no crease rules, but edge (" +
                               std::to_string(mesh.tags.creases[i].v0) + ", " + std::to_string(mesh.tags.creases[i].v1) +
                               ") is tagged as a crease");
-  for (std::size_t i = 0; i < mesh.tags.corners.size(); ++i)
+  // The sqrt3 split keeps the parent's vertices, and with them corner tags.
+  for (std::size_t i = 0; i < mesh.tags.corners.size() && scheme.split != SplitRule::sqrt3; ++i)
     if (mesh.tags.corners[i].sharpness > 0.0)
       throw InvalidInputError(where(lines, &SourceLines::corner_lines, i) + name + " has no corner rules, but vertex " +
                               std::to_string(mesh.tags.corners[i].vertex) + " is tagged as a corner");
@@ -411,8 +421,8 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   const CreaseMethod method = crease_method_of(mesh, options);
   PolygonMesh result;
   run_with_threads(options.threads, [&] {
-    result = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_level(parent, topology, scheme, boundary, method, options,
+    result = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology, int l) {
+      return refine_level(parent, topology, l, scheme, boundary, method, options,
                           [&](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level, bool) {
                             evaluate_fast(source, step, view, level);
                             detail::apply_flatness(level.flatness, level.child);
@@ -430,9 +440,9 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
   const CreaseMethod method = crease_method_of(mesh, options);
   std::vector<StencilTable> tables;
   run_with_threads(options.threads, [&] {
-    PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
+    PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology, int l) {
       Level level = refine_level(
-          parent, topology, scheme, boundary, method, options,
+          parent, topology, l, scheme, boundary, method, options,
           [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool first) {
             // A composite scheme's later steps compose onto the level's table.
             if (first) tables.push_back(record_stencils(view, step, lv.map, nullptr));
@@ -457,8 +467,8 @@ StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme,
   const CreaseMethod method = crease_method_of(mesh, options);
   std::optional<StencilTable> total;
   run_with_threads(options.threads, [&] {
-    refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology) {
-      return refine_level(parent, topology, scheme, boundary, method, options,
+    refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology, int l) {
+      return refine_level(parent, topology, l, scheme, boundary, method, options,
                           [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool) {
                             total = record_stencils(view, step, lv.map, total ? &*total : nullptr);
                             detail::apply_flatness(lv.flatness, *total);

@@ -4,12 +4,15 @@
 #include "subdiv/rules/butterfly.h"
 #include "subdiv/rules/catmull_clark.h"
 #include "subdiv/rules/doo_sabin.h"
+#include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/generalized_catmull_clark.h"
+#include "subdiv/rules/interpolatory_sqrt3.h"
 #include "subdiv/rules/linear.h"
 #include "subdiv/rules/loop.h"
 #include "subdiv/rules/midedge.h"
 #include "subdiv/rules/quasi_4_8.h"
 #include "subdiv/rules/scheme.h"
+#include "subdiv/rules/sqrt3.h"
 
 namespace subdiv {
 
@@ -24,9 +27,10 @@ const char* to_string(VertexRule r) {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 12> schemes = {
+  static const std::array<const Scheme*, 15> schemes = {
       &catmull_clark_scheme(), &loop_scheme(),     &loop_warren_scheme(), &butterfly_scheme(),
-      &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(), &generalized_catmull_clark_scheme(),
+      &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(), &sqrt3_scheme(),
+      &interpolatory_sqrt3_scheme(), &four_eight_scheme(), &generalized_catmull_clark_scheme(),
       &midpoint_scheme(), &bilinear_scheme(), &linear_scheme(), &quasi_4_8_scheme()};
   return schemes;
 }

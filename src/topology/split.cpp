@@ -13,12 +13,16 @@ namespace subdiv {
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f) {
   if (rule == SplitRule::quad) return {parent.face_first_corner(f), parent.face_first_corner(f) + parent.face_size(f)};
   if (rule == SplitRule::dual || rule == SplitRule::midedge || rule == SplitRule::identity) return {f, f + 1};
+  if (rule == SplitRule::sqrt3 || rule == SplitRule::sqrt2)
+    throw InvalidInputError(std::string(to_string(rule)) + ": child faces belong to the parent's edges, not to its faces");
   return {4 * f, 4 * f + 4};
 }
 
 double arity(SplitRule r) {
   if (r == SplitRule::identity) return 1.0;
-  return r == SplitRule::midedge || r == SplitRule::quasi_4_8 ? std::sqrt(2.0) : 2.0;
+  if (r == SplitRule::midedge || r == SplitRule::sqrt2 || r == SplitRule::quasi_4_8) return std::sqrt(2.0);
+  if (r == SplitRule::sqrt3) return std::sqrt(3.0);
+  return 2.0;
 }
 
 const char* to_string(SplitRule r) {
@@ -29,6 +33,8 @@ const char* to_string(SplitRule r) {
     case SplitRule::midedge: return "midedge split (QD, arity sqrt 2)";
     case SplitRule::identity: return "identity (same faces)";
     case SplitRule::quasi_4_8: return "quasi 4-8 bisection (geometric, arity sqrt 2)";
+    case SplitRule::sqrt3: return "sqrt3 split (TP, arity sqrt 3)";
+    case SplitRule::sqrt2: return "sqrt2 split (QP, arity sqrt 2)";
   }
   return "?";
 }
@@ -39,6 +45,20 @@ double child_sharpness(double s) {
   if (s >= kInfiniteSharpness) return s;
   return s > 1.0 ? s - 1.0 : 0.0;
 }
+
+namespace {
+
+void propagate_corners(const Tags& in, Index vertex_count, const SplitMap& map, Tags& out) {
+  for (const CornerTag& c : in.corners) {
+    CornerTag t = c;
+    t.sharpness = child_sharpness(c.sharpness);
+    if (t.sharpness <= 0.0 || c.vertex < 0 || c.vertex >= vertex_count) continue;
+    t.vertex = map.vertex_point(c.vertex);
+    out.corners.push_back(t);
+  }
+}
+
+}  // namespace
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
                     std::span<const double> child_end_sharpness, PolygonMesh& child) {
@@ -56,6 +76,10 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
   out.face_varying_propagate_corners = in.face_varying_propagate_corners;
   out.face_varying_propagate_corners_set = in.face_varying_propagate_corners_set;
   out.other = in.other;
+  if (map.rule == SplitRule::sqrt3) {  // vertices are kept, edges are not: corners only
+    propagate_corners(in, parent.vertex_count(), map, out);
+    return;
+  }
   if (!is_primal(map.rule)) return;  // no sharp features there (check_refinable)
 
   for (const CreaseTag& c : in.creases) {
@@ -73,13 +97,7 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
     if (s0 > 0.0) out.creases.push_back({map.vertex_point(c.v0), map.edge_point(e), s0});
     if (s1 > 0.0) out.creases.push_back({map.edge_point(e), map.vertex_point(c.v1), s1});
   }
-  for (const CornerTag& c : in.corners) {
-    CornerTag t = c;
-    t.sharpness = child_sharpness(c.sharpness);
-    if (t.sharpness <= 0.0 || c.vertex < 0 || c.vertex >= parent.vertex_count()) continue;
-    t.vertex = map.vertex_point(c.vertex);
-    out.corners.push_back(t);
-  }
+  propagate_corners(in, parent.vertex_count(), map, out);
   if (!in.holes.empty()) {
     // Child faces of increasing parents increase: sorted parents give sorted holes.
     std::vector<Index> holes = in.holes;
@@ -103,7 +121,7 @@ void require_edges(const MeshTopology& topology) {
 }  // namespace detail
 
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
-                        PolygonMesh& child, std::span<const double> child_end_sharpness) {
+                        PolygonMesh& child, std::span<const double> child_end_sharpness, int level) {
   if (rule == SplitRule::quasi_4_8)  // its split reads positions
     throw InvalidInputError("the quasi 4-8 bisection is not a topological split (bisection_split.h)");
   detail::require_edges(topology);
@@ -111,6 +129,8 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
                  : rule == SplitRule::triangle ? detail::triangle_split(topology, child)
                  : rule == SplitRule::dual     ? detail::dual_split(topology, child)
                  : rule == SplitRule::identity ? detail::identity_split(topology, child)
+                 : rule == SplitRule::sqrt3    ? detail::sqrt3_split(topology, child, level)
+                 : rule == SplitRule::sqrt2    ? detail::sqrt2_split(topology, child)
                                                : detail::midedge_split(topology, child);
   detail::propagate_tags(parent, topology, map, child_end_sharpness, child);
   // Vertex channels are the masks' to fill; face-varying ones split here.
@@ -123,6 +143,8 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
     else if (rule == SplitRule::triangle) detail::triangle_split_face_varying(topology, in, out);
     else if (rule == SplitRule::dual) detail::dual_split_face_varying(topology, map, child, in, out);
     else if (rule == SplitRule::identity) out = in;
+    else if (rule == SplitRule::sqrt3) detail::sqrt3_split_face_varying(topology, map, child, in, out);
+    else if (rule == SplitRule::sqrt2) detail::sqrt2_split_face_varying(topology, map, child, in, out);
     else detail::midedge_split_face_varying(topology, child, in, out);
   }
   return map;

@@ -13,6 +13,9 @@ SplitMap triangle_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap dual_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap midedge_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap identity_split(const MeshTopology& topology, PolygonMesh& child);
+/// `level`: the parent's level, whose parity says whether the step trisects.
+SplitMap sqrt3_split(const MeshTopology& topology, PolygonMesh& child, int level);
+SplitMap sqrt2_split(const MeshTopology& topology, PolygonMesh& child);
 
 /// Face-varying values linear within each face, for the child's corners.
 void quad_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);
@@ -25,6 +28,14 @@ void dual_split_face_varying(const MeshTopology& topology, const SplitMap& map, 
 /// Midedge split: a child vertex's value is its edge's midpoint value.
 void midedge_split_face_varying(const MeshTopology& topology, const PolygonMesh& child, const FaceVaryingChannel& in,
                                 FaceVaryingChannel& out);
+
+/// Sqrt3 split: one value per child vertex (sqrt3_split.cpp).
+void sqrt3_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
+                              const FaceVaryingChannel& in, FaceVaryingChannel& out);
+
+/// Sqrt2 split: one value per child vertex (sqrt2_split.cpp).
+void sqrt2_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
+                              const FaceVaryingChannel& in, FaceVaryingChannel& out);
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
                     std::span<const double> child_end_sharpness, PolygonMesh& child);

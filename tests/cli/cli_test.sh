@@ -166,6 +166,29 @@ run analyze-midpoint-6 0 analyze -s midpoint --degree 6 -k 3..5 && stdout_has an
 run analyze-gcc-boundary 1 analyze -s gcc --boundary -k 2 && stderr_one_line analyze-gcc-boundary &&
   stderr_has analyze-gcc-boundary "interior configurations only"
 run limit-gcc 1 limit "$meshes/cube.obj" -s gcc -o "$work/x.obj" && stderr_one_line limit-gcc
+run refine-sqrt3 0 refine "$meshes/cube.obj" -s sqrt3 --triangulate -l 3 -o "$work/s3.obj" --stats
+stdout_has refine-sqrt3 "level 1: 20 vertices, 36 faces" && stdout_has refine-sqrt3 "level 3: 164 vertices, 324 faces"
+run refine-sqrt3-open 0 refine "$meshes/l_shape.obj" -s sqrt3 --triangulate -l 2 -o "$work/s3l.obj"
+run refine-sqrt3-open-info 0 info "$work/s3l.obj" && stdout_has refine-sqrt3-open-info "validation      ok"
+run refine-sqrt3-quads 1 refine "$meshes/cube.obj" -s sqrt3 -o "$work/x.obj" && stderr_one_line refine-sqrt3-quads &&
+  stderr_has refine-sqrt3-quads "needs a triangle mesh"
+run analyze-sqrt3 0 analyze -s sqrt3 -k 3..12 && stdout_has analyze-sqrt3 "period 2"
+grep -qE "^interior k=6 +7 +1 +0.333333 +0.333333 +0.111111 .* C1 " "$work/out" && pass || fail "analyze sqrt3: k=6 row"
+[ "$(grep -cE "^interior k=[0-9]+ .* C1 " "$work/out")" = 10 ] && pass || fail "analyze sqrt3: not C1 at every valence"
+run analyze-sqrt3-boundary 0 analyze -s sqrt3 --boundary -k 3 && stdout_has analyze-sqrt3-boundary "0.333333  0.333333"
+run refine-isqrt3 0 refine "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 -l 2 -o "$work/is3.obj" --stats
+stdout_has refine-isqrt3 "level 2: 20 vertices, 36 faces"
+run refine-isqrt3-open 1 refine "$meshes/l_shape.obj" -s interpolatory-sqrt3 --triangulate -o "$work/x.obj" &&
+  stderr_one_line refine-isqrt3-open && stderr_has refine-isqrt3-open "needs a closed mesh"
+run analyze-isqrt3 0 analyze -s interpolatory-sqrt3 -k 3..8 --no-charmap &&
+  grep -qE "^interior k=6 +37 +3 +0.333333 +0.333333 " "$work/out" && pass || fail "analyze interpolatory-sqrt3: k=6 row"
+run refine-four-eight 0 refine "$meshes/cube.obj" -s four-eight -l 2 -o "$work/48.obj" --stats
+stdout_has refine-four-eight "level 1: 14 vertices, 12 faces" && stdout_has refine-four-eight "level 2: 26 vertices, 24 faces"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/quad.obj"
+run refine-four-eight-open 1 refine "$work/quad.obj" -s four-eight -o "$work/x.obj" &&
+  stderr_one_line refine-four-eight-open && stderr_has refine-four-eight-open "needs a closed mesh"
+run analyze-four-eight 0 analyze -s four-eight -k 3..8 && stdout_has analyze-four-eight "period 2"
+grep -qE "^interior k=4 +25 +2 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze four-eight: k=4 row"
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold

@@ -5,6 +5,7 @@
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/mesh_stats.h"
+#include "subdiv/mesh/triangulate.h"
 #include "subdiv/mesh/validation.h"
 #include "support/test_meshes.h"
 
@@ -203,6 +204,65 @@ TEST(TriangleSplit, DerivedTopologyEqualsTheGenericOne) {
   const MeshTopology t(pillow);
   split_topology(pillow, t, SplitRule::triangle, child);
   EXPECT_FALSE(MeshTopology::from_triangle_split(t, child).has_value());
+}
+
+// The sqrt3 split's derived topology equals the one built from the child's
+// faces, level after level, on closed meshes; open meshes (whose trisecting
+// steps it does not cover) get none.
+TEST(DerivedTopology, Sqrt3SplitMatchesTheGenericBuild) {
+  std::vector<std::pair<std::string, PolygonMesh>> cases;
+  cases.emplace_back("tetrahedron", test::tetrahedron());
+  cases.emplace_back("cube", triangulate(test::cube()));
+  PolygonMesh with_isolated = test::tetrahedron();
+  with_isolated.positions.push_back({9, 9, 9});
+  cases.emplace_back("isolated vertex", with_isolated);
+  for (const auto& [name, mesh] : cases) {
+    PolygonMesh parent = mesh;
+    std::optional<MeshTopology> topology = MeshTopology(parent);
+    for (int level = 0; level < 4; ++level) {
+      PolygonMesh child;
+      split_topology(parent, *topology, SplitRule::sqrt3, child, {}, level);
+      const std::optional<MeshTopology> derived = MeshTopology::from_sqrt3_split(*topology, child);
+      ASSERT_TRUE(derived.has_value()) << name;
+      EXPECT_TRUE(*derived == MeshTopology(child)) << name << " level " << level;
+      parent = std::move(child);
+      topology = derived;
+    }
+  }
+  const PolygonMesh open = test::triangle_grid(3, 2);
+  const MeshTopology t(open);
+  PolygonMesh child;
+  split_topology(open, t, SplitRule::sqrt3, child);
+  EXPECT_FALSE(MeshTopology::from_sqrt3_split(t, child).has_value());
+}
+
+// The same for the sqrt2 split, on closed polygon meshes (the cube's quads,
+// a mix of triangles and quads).
+TEST(DerivedTopology, Sqrt2SplitMatchesTheGenericBuild) {
+  std::vector<std::pair<std::string, PolygonMesh>> cases;
+  cases.emplace_back("cube", test::cube());
+  cases.emplace_back("tetrahedron", test::tetrahedron());
+  PolygonMesh with_isolated = test::cube();
+  with_isolated.positions.push_back({9, 9, 9});
+  cases.emplace_back("isolated vertex", with_isolated);
+  for (const auto& [name, mesh] : cases) {
+    PolygonMesh parent = mesh;
+    std::optional<MeshTopology> topology = MeshTopology(parent);
+    for (int level = 0; level < 4; ++level) {
+      PolygonMesh child;
+      split_topology(parent, *topology, SplitRule::sqrt2, child);
+      const std::optional<MeshTopology> derived = MeshTopology::from_sqrt2_split(*topology, child);
+      ASSERT_TRUE(derived.has_value()) << name;
+      EXPECT_TRUE(*derived == MeshTopology(child)) << name << " level " << level;
+      parent = std::move(child);
+      topology = derived;
+    }
+  }
+  const PolygonMesh open = test::quad_grid(3, 2);
+  const MeshTopology t(open);
+  PolygonMesh child;
+  split_topology(open, t, SplitRule::sqrt2, child);
+  EXPECT_FALSE(MeshTopology::from_sqrt2_split(t, child).has_value());
 }
 
 }  // namespace

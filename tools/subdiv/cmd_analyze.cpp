@@ -251,7 +251,7 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
     }
   }
   std::fwrite(text.data(), 1, text.size(), stdout);
-  if (!opt.json && !is_primal(scheme->split))
+  if (!opt.json && (scheme->split == SplitRule::dual || scheme->split == SplitRule::midedge))
     std::printf("(%s: interior k is an extraordinary face of k sides in a ring of quads)\n", to_string(scheme->split));
   if (!opt.json)
     for (const auto& [path, bytes] : plots) std::printf("wrote %s (%zu bytes)\n", path.c_str(), bytes.size());

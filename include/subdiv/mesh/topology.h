@@ -47,6 +47,13 @@ class MeshTopology {
   /// The same for the triangle split of a triangle mesh (child vertices
   /// [edge points | vertex points], child faces 4f .. 4f+3).
   static std::optional<MeshTopology> from_triangle_split(const MeshTopology& parent, const PolygonMesh& child);
+  /// The same for the sqrt3 split of a closed manifold triangle mesh (child
+  /// vertices [face points | vertex points], child faces 2e, 2e+1 per edge);
+  /// nullopt for open meshes, whose trisecting steps it does not cover.
+  static std::optional<MeshTopology> from_sqrt3_split(const MeshTopology& parent, const PolygonMesh& child);
+  /// The same for the sqrt2 split of a closed manifold polygon mesh (child
+  /// vertices [face points | vertex points], child face e per edge).
+  static std::optional<MeshTopology> from_sqrt2_split(const MeshTopology& parent, const PolygonMesh& child);
 
   /// True when every vertex has an ordered ring or no face at all.
   bool all_rings_ordered() const;

@@ -99,6 +99,13 @@ struct LevelView {
   std::span<const double> sector_angle = {};
   std::span<const double> child_end_sharpness = {};  ///< empty: is_sharp_at == is_sharp
   SchemeParameters parameters = {};  ///< the refined scheme's
+  /// The parent's level, 0 for the control mesh: rules that alternate
+  /// between steps (sqrt3's boundary) read its parity.
+  int level = 0;
+  /// Per vertex, the rule of its vertex point (this level's): masks of new
+  /// points next to a vertex that depend on its rule (sqrt3's boundary
+  /// points next to a corner) read it. Empty in views made outside the engine.
+  std::span<const VertexRule> vertex_rule = {};
 
   bool is_sharp(Index e) const {
     return !edge_sharpness.empty() && edge_sharpness[static_cast<std::size_t>(e)] > sharp_above;
@@ -165,7 +172,8 @@ using EdgeMask = void (*)(const LevelView& level, Index edge, EdgeRule rule, Mas
 using VertexMask = void (*)(const LevelView& level, Index vertex, VertexRule rule, MaskBuilder& mask);
 /// Dual split: the child vertex of face corner `corner`.
 using CornerMask = void (*)(const LevelView& level, Index corner, MaskBuilder& mask);
-/// Dual split: the child vertex near end `vertex` of boundary edge `edge`.
+/// Dual split, and the sqrt3 split's trisecting steps: the child vertex near
+/// end `vertex` of boundary edge `edge`.
 using BoundaryPointMask = void (*)(const LevelView& level, Index edge, Index vertex, MaskBuilder& mask);
 
 struct Scheme;
@@ -179,14 +187,14 @@ struct Scheme {
   std::string_view citation;  ///< the paper the rules come from
   SplitRule split;
   bool needs_triangles = false;
-  FaceMask face_point = nullptr;  ///< quad split only
+  FaceMask face_point = nullptr;  ///< quad and sqrt3 splits
   EdgeMask edge_point = nullptr;  ///< primal splits
   VertexMask vertex_point = nullptr;  ///< primal splits
   /// Closed-form limit masks for the scheme's standard rules, or nullptr:
   /// limit positions then use the masks the analysis reads off the rules.
   LimitMaskFunction limit_masks = nullptr;
   CornerMask corner_point = nullptr;  ///< dual split only
-  BoundaryPointMask boundary_point = nullptr;  ///< dual split only
+  BoundaryPointMask boundary_point = nullptr;  ///< dual split, sqrt3 split
   SchemeParameters parameters = {};
   /// Whether the masks read parameters.tension (the CLI's --tension).
   bool takes_tension = false;

@@ -19,6 +19,14 @@
 //   quasi 4-8 bisection (arity sqrt 2, Velho): a binary step whose split
 //     depends on the positions; not a split_topology() rule, see
 //     subdiv/topology/bisection_split.h.
+//   sqrt3 split (TP, arity sqrt 3, Kobbelt): a face point per triangle, the
+//     old edges flipped; boundary edges kept on odd steps and trisected on
+//     even ones; child vertices are numbered [face points | boundary points,
+//     two per boundary edge on even steps | vertex points]
+//     (src/topology/sqrt3_split.cpp).
+//   sqrt2 split (QP, arity sqrt 2, 4-8 on quads): a face point per face, a
+//     quad per edge, the old edges dropped; child vertices are numbered
+//     [face points | vertex points] (src/topology/sqrt2_split.cpp).
 //
 // The child is a complete PolygonMesh (faces, tags, face-varying indices);
 // its positions and vertex channels are left for a scheme's masks to fill.
@@ -31,15 +39,20 @@
 
 namespace subdiv {
 
-enum class SplitRule { quad, triangle, dual, midedge, identity, quasi_4_8 };
+enum class SplitRule { quad, triangle, dual, midedge, identity, quasi_4_8, sqrt3, sqrt2 };
 
 /// The primal splits keep the parent's vertices (as vertex points) and its
 /// sharp features; the analysis' vertex configurations, limit positions,
 /// depth and adaptive refinement are written for them.
 constexpr bool is_primal(SplitRule r) { return r == SplitRule::quad || r == SplitRule::triangle; }
 
-/// How much one step shrinks the faces' size: 2, sqrt 2 for the midedge
-/// split and the quasi 4-8 bisection, 1 for the identity.
+/// Whether the sqrt3 split's step from level `level` (0 = the control mesh)
+/// trisects the boundary edges: every second step, the first one does not.
+bool sqrt3_step_trisects(int level);
+
+/// How much one step shrinks the faces' size: 2, sqrt 2 for the midedge and
+/// sqrt2 splits and the quasi 4-8 bisection, sqrt 3 for the sqrt3 split, 1
+/// for the identity.
 double arity(SplitRule r);
 
 const char* to_string(SplitRule);
@@ -58,6 +71,14 @@ struct SplitMap {
   /// vertex_points == child_vertex_count (no vertex points).
   Index corner_points = 0;
   std::vector<Index> boundary_edges;
+  /// Sqrt3 split: the parent face of each face point (face point i is made
+  /// from face point_faces[i]); empty when every face has one (face point f
+  /// is face f). On trisecting steps edge_points starts the boundary points,
+  /// two per edge of `boundary_edges` as in the dual split.
+  std::vector<Index> point_faces;
+
+  /// The parent face of face point i (i < edge_points - face_points).
+  Index point_face(Index i) const { return point_faces.empty() ? i : point_faces[static_cast<std::size_t>(i)]; }
 
   Index face_point(Index f) const { return face_points + f; }
   Index edge_point(Index e) const { return edge_points + e; }
@@ -74,7 +95,9 @@ bool dual_split_has_v_face(const MeshTopology& topology, Index v);
 
 /// The child faces of parent face f, [first, last): the quad split makes one
 /// per corner (child face = parent corner), the triangle split 4f .. 4f+3,
-/// the dual and midedge splits one (child face f, its F-face).
+/// the dual and midedge splits one (child face f, its F-face). The sqrt3
+/// and sqrt2 splits' child faces belong to edges, not faces: throws
+/// InvalidInputError.
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f);
 
 /// The child level's faces, tags (crease and corner sharpness decremented by
@@ -89,8 +112,10 @@ std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, 
 /// the tag's minus one (a half that is still infinitely sharp, an edge
 /// sharp for being a boundary, keeps the tag's minus one).
 /// Requires every face corner to have an edge (no degenerate faces) and, for
-/// the triangle split, triangles only; throws TopologyError otherwise.
+/// the triangle and sqrt3 splits, triangles only; throws TopologyError
+/// otherwise. `level` is the parent's level (0 = the control mesh): the sqrt3
+/// split alternates its boundary treatment with it.
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
-                        PolygonMesh& child, std::span<const double> child_end_sharpness = {});
+                        PolygonMesh& child, std::span<const double> child_end_sharpness = {}, int level = 0);
 
 }  // namespace subdiv
