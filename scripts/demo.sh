@@ -29,7 +29,8 @@ for mesh in data/meshes/*.obj; do
 done
 echo "== the cube and the tetrahedron with every surface scheme (4 levels)"
 for mesh in cube tetrahedron; do
-  for scheme in catmull-clark loop butterfly modified-butterfly doo-sabin midedge; do
+  for scheme in catmull-clark loop butterfly modified-butterfly doo-sabin midedge sqrt3 interpolatory-sqrt3 \
+                four-eight gcc midpoint quasi-4-8; do
     "$subdiv" refine "data/meshes/$mesh.obj" -s "$scheme" --triangulate -l 4 -o "out/${mesh}_${scheme}4.obj"
   done
 done
@@ -38,6 +39,9 @@ for scheme in loop catmull-clark butterfly modified-butterfly doo-sabin; do
   "$subdiv" analyze -s "$scheme" -k 3..8 --plot-spectrum "out/${scheme}_spectrum.svg" \
     --plot-charmap 5 "out/${scheme}_charmap5.png"
 done
+echo "== subdiv analyze -s sqrt3 -k 3..8 (two steps), and the generalized Catmull-Clark scheme's closed forms"
+"$subdiv" analyze -s sqrt3 -k 3..8
+"$subdiv" analyze -s gcc -k 3..8
 echo "== the L's concave corner: standard and piecewise-smooth rules"
 "$subdiv" refine data/meshes/l_shape.obj -s catmull-clark -l 4 -o out/l_shape_standard4.obj
 "$subdiv" refine data/meshes/l_shape.obj -s catmull-clark -l 4 --boundary-rules piecewise-smooth \
