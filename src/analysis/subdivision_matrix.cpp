@@ -20,27 +20,9 @@ constexpr double kLayoutTolerance = 1e-9;
 // vertex, or the dual split's centre face, whose vertices are ring 0), with
 // their ring numbers (-1 outside).
 std::vector<int> face_rings(const MeshTopology& topology, const RingMesh& mesh, int rings) {
-  std::vector<int> ring(static_cast<std::size_t>(topology.vertex_count()), -1);
-  std::vector<Index> frontier;
-  if (mesh.centre_face != kInvalidIndex) {
-    const auto face = topology.face_vertices(mesh.centre_face);
-    frontier.assign(face.begin(), face.end());
-  } else {
-    frontier.push_back(mesh.centre);
-  }
-  for (const Index v : frontier) ring[static_cast<std::size_t>(v)] = 0;
-  for (int r = 1; r <= rings; ++r) {
-    std::vector<Index> next;
-    for (const Index v : frontier)
-      for (const Index c : topology.vertex_corners(v))
-        for (const Index w : topology.face_vertices(topology.corner_face(c)))
-          if (ring[static_cast<std::size_t>(w)] < 0) {
-            ring[static_cast<std::size_t>(w)] = r;
-            next.push_back(w);
-          }
-    frontier = std::move(next);
-  }
-  return ring;
+  if (mesh.centre_face != kInvalidIndex) return vertex_rings(topology, topology.face_vertices(mesh.centre_face), rings);
+  const Index centre[] = {mesh.centre};
+  return vertex_rings(topology, centre, rings);
 }
 
 // The vertex of `points` (among `candidates`) at p, or -1.
@@ -56,6 +38,24 @@ double angle_of(Vec3 p) {
 }
 
 }  // namespace
+
+std::vector<int> vertex_rings(const MeshTopology& topology, std::span<const Index> centre, int rings) {
+  std::vector<int> ring(static_cast<std::size_t>(topology.vertex_count()), -1);
+  std::vector<Index> frontier(centre.begin(), centre.end());
+  for (const Index v : frontier) ring[static_cast<std::size_t>(v)] = 0;
+  for (int r = 1; r <= rings; ++r) {
+    std::vector<Index> next;
+    for (const Index v : frontier)
+      for (const Index c : topology.vertex_corners(v))
+        for (const Index w : topology.face_vertices(topology.corner_face(c)))
+          if (ring[static_cast<std::size_t>(w)] < 0) {
+            ring[static_cast<std::size_t>(w)] = r;
+            next.push_back(w);
+          }
+    frontier = std::move(next);
+  }
+  return ring;
+}
 
 LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings,
                                                 const RefineOptions& rules) {

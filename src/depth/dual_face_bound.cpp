@@ -37,35 +37,6 @@ Eigen::RowVectorXd limit_functional(const Eigen::MatrixXd& S, int k) {
   return l / l.sum();
 }
 
-// Each vertex's ring about face f (0: f's vertices; r: the vertices of the
-// faces touching ring r - 1), -1 beyond `rings`: subdivision_matrix.cpp's
-// face rings.
-std::vector<int> vertex_rings(const MeshTopology& t, Index f, int rings) {
-  std::vector<int> ring(static_cast<std::size_t>(t.vertex_count()), -1);
-  std::vector<Index> frontier(t.face_vertices(f).begin(), t.face_vertices(f).end());
-  for (const Index v : frontier) ring[static_cast<std::size_t>(v)] = 0;
-  for (int r = 1; r <= rings; ++r) {
-    std::vector<Index> next;
-    for (const Index v : frontier)
-      for (const Index c : t.vertex_corners(v))
-        for (const Index w : t.face_vertices(t.corner_face(c)))
-          if (ring[static_cast<std::size_t>(w)] < 0) {
-            ring[static_cast<std::size_t>(w)] = r;
-            next.push_back(w);
-          }
-    frontier = std::move(next);
-  }
-  return ring;
-}
-
-// The other side of corner c's outgoing edge, or kInvalidIndex at a
-// boundary or non-manifold edge.
-Index across(const MeshTopology& t, Index c) {
-  const auto sides = t.edge_corners(t.corner_edge(c));
-  if (sides.size() != 2) return kInvalidIndex;
-  return sides[0] == c ? sides[1] : sides[0];
-}
-
 // The functionals of face f's neighbourhood in mesh t (column(v) >= 0 on
 // its vertices): vertex-to-limit functionals of f's vertices (interior: the
 // centroid of the V-face one step down, whose corner points are rows of
@@ -126,7 +97,7 @@ void add_functionals(const MeshTopology& t, Index f, const StencilTable& step, C
 // edges, kinds and face counts a match must reproduce.
 template <typename Column>
 DualFaceOperator::Pattern neighbourhood_pattern(const MeshTopology& t, Index f, Column column) {
-  const std::vector<int> rings = vertex_rings(t, f, 1);
+  const std::vector<int> rings = vertex_rings(t, t.face_vertices(f), 1);
   std::vector<char> wanted(static_cast<std::size_t>(t.face_count()), 0);
   for (Index v = 0; v < t.vertex_count(); ++v)
     if (rings[static_cast<std::size_t>(v)] >= 0)
@@ -143,7 +114,7 @@ DualFaceOperator::Pattern neighbourhood_pattern(const MeshTopology& t, Index f, 
       if (column(t.corner_vertex(c)) < 0)
         throw InvalidInputError(face_name(t.face_size(f)) + ": a face of the one-ring reaches outside the neighbourhood");
       s.columns.push_back(column(t.corner_vertex(c)));
-      s.boundary.push_back(across(t, c) == kInvalidIndex ? 1 : 0);
+      s.boundary.push_back(t.corner_across(c) == kInvalidIndex ? 1 : 0);
     }
     step_of[static_cast<std::size_t>(g)] = static_cast<int>(pattern.steps.size());
     face_of_step.push_back(g);
@@ -153,7 +124,7 @@ DualFaceOperator::Pattern neighbourhood_pattern(const MeshTopology& t, Index f, 
   for (std::size_t i = 0; i < pattern.steps.size(); ++i) {
     const Index g = face_of_step[i];
     for (int a = 0; a < t.face_size(g); ++a) {
-      const Index other = across(t, t.face_first_corner(g) + a);
+      const Index other = t.corner_across(t.face_first_corner(g) + a);
       if (other == kInvalidIndex) continue;
       const Index h = t.corner_face(other);
       if (!wanted[static_cast<std::size_t>(h)] || step_of[static_cast<std::size_t>(h)] >= 0) continue;
@@ -189,7 +160,7 @@ std::optional<std::vector<Index>> match(const DualFaceOperator::Pattern& pattern
   for (std::size_t s = 0; s < pattern.steps.size(); ++s) {
     const DualFaceOperator::Step& step = pattern.steps[s];
     if (s > 0) {
-      const Index other = across(t, corner_at(static_cast<std::size_t>(step.from), step.from_corner));
+      const Index other = t.corner_across(corner_at(static_cast<std::size_t>(step.from), step.from_corner));
       if (other == kInvalidIndex) return std::nullopt;
       face[s] = t.corner_face(other);
       const Index size = t.face_size(face[s]);
@@ -199,7 +170,7 @@ std::optional<std::vector<Index>> match(const DualFaceOperator::Pattern& pattern
     }
     for (std::size_t i = 0; i < step.columns.size(); ++i) {
       const Index c = corner_at(s, static_cast<int>(i));
-      if ((across(t, c) == kInvalidIndex) != (step.boundary[i] != 0)) return std::nullopt;
+      if ((t.corner_across(c) == kInvalidIndex) != (step.boundary[i] != 0)) return std::nullopt;
       Index& mapped = vertex_of[static_cast<std::size_t>(step.columns[i])];
       if (mapped != kInvalidIndex && mapped != t.corner_vertex(c)) return std::nullopt;
       mapped = t.corner_vertex(c);
@@ -275,7 +246,7 @@ std::optional<Eigen::MatrixXd> canonical_neighbourhood(const DualFaceOperator& o
 
 std::optional<DualFaceOperator> local_face_operator(const MeshTopology& parent, const StencilTable& step,
                                                     const MeshTopology& child, Index f) {
-  const std::vector<int> rings = vertex_rings(parent, f, kDualBoundRings);
+  const std::vector<int> rings = vertex_rings(parent, parent.face_vertices(f), kDualBoundRings);
   std::vector<Eigen::Index> column(static_cast<std::size_t>(parent.vertex_count()), -1);
   Eigen::Index n = 0;
   for (Index v = 0; v < parent.vertex_count(); ++v)
@@ -311,7 +282,7 @@ std::optional<DualFaceOperator> local_face_operator(const MeshTopology& parent, 
 }
 
 Eigen::MatrixXd local_neighbourhood(const MeshTopology& t, const std::vector<Vec3>& positions, Index f) {
-  const std::vector<int> rings = vertex_rings(t, f, kDualBoundRings);
+  const std::vector<int> rings = vertex_rings(t, t.face_vertices(f), kDualBoundRings);
   std::vector<Vec3> points;
   for (Index v = 0; v < t.vertex_count(); ++v)
     if (rings[static_cast<std::size_t>(v)] >= 0) points.push_back(positions[static_cast<std::size_t>(v)]);

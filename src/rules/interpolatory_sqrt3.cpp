@@ -52,16 +52,9 @@ std::vector<double> interpolatory_sqrt3_weights(int k) {
 
 namespace {
 
-// The corner on the other side of corner c's edge, or kInvalidIndex.
-Index across(const MeshTopology& t, Index c) {
-  const auto sides = t.edge_corners(t.corner_edge(c));
-  if (sides.size() != 2) return kInvalidIndex;
-  return sides[0] == c ? sides[1] : sides[0];
-}
-
 // The apex of the face across corner c's edge, or kInvalidIndex.
 Index apex_across(const MeshTopology& t, Index c) {
-  const Index o = across(t, c);
+  const Index o = t.corner_across(c);
   return o == kInvalidIndex ? kInvalidIndex : t.corner_vertex(t.corner_prev(o));
 }
 
@@ -73,7 +66,7 @@ bool add_regular_rule(const MeshTopology& t, Index f, MaskBuilder& mask) {
   const Index first = t.face_first_corner(f);
   Index outer[9];
   for (Index i = 0; i < 3; ++i) {
-    const Index o = across(t, first + i);  // in the neighbour N, running against corner first + i
+    const Index o = t.corner_across(first + i);  // in the neighbour N, running against corner first + i
     if (o == kInvalidIndex) return false;
     outer[3 * i] = t.corner_vertex(t.corner_prev(o));        // N's apex
     outer[3 * i + 1] = apex_across(t, t.corner_next(o));     // beyond N's edge from our corner's end

@@ -8,11 +8,13 @@
 // matrix holds exactly what refinement computes.
 
 #include <Eigen/Core>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "subdiv/analysis/configuration.h"
 #include "subdiv/core/types.h"
+#include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/scheme.h"
 
@@ -53,6 +55,11 @@ struct LocalSubdivisionMatrix {
 /// configuration has; one more keeps the outer boundary's rules away from
 /// the masks of the neighbourhood's image.
 inline int ring_mesh_size(int rings) { return rings + 2; }
+
+/// Each vertex's face ring about `centre` (ring 0: the centre's vertices;
+/// ring r: the vertices of the faces touching ring r - 1), -1 beyond
+/// `rings`: the neighbourhoods the matrices are read over.
+std::vector<int> vertex_rings(const MeshTopology& topology, std::span<const Index> centre, int rings);
 
 /// The matrix of `scheme` at `configuration` over a neighbourhood of `rings`
 /// face rings, refined under `rules` (boundary rules, flatness; its level

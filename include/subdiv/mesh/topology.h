@@ -93,6 +93,15 @@ class MeshTopology {
   /// Edge from corner c to the next corner of its face; kInvalidIndex when
   /// both corners hold the same vertex (a degenerate face).
   Index corner_edge(Index c) const { return corner_edge_[c]; }
+  /// The corner on the other side of corner c's edge (it runs the edge the
+  /// other way on a consistently oriented mesh); kInvalidIndex unless the
+  /// edge has exactly two sides.
+  Index corner_across(Index c) const {
+    const Index e = corner_edge_[c];
+    if (e == kInvalidIndex || edge_face_count(e) != 2) return kInvalidIndex;
+    const auto sides = edge_corners(e);
+    return sides[0] == c ? sides[1] : sides[0];
+  }
 
   // --- edges ---------------------------------------------------------------
   /// The two vertices, smaller index first.
