@@ -13,19 +13,12 @@
 #include "subdiv/analysis/subdivision_matrix.h"
 #include "subdiv/core/error.h"
 #include "subdiv/rules/generalized_catmull_clark.h"
+#include "support/gcc_schemes.h"
 
 namespace subdiv {
 namespace {
 
-Scheme gcc(int degree, double alpha, double beta) {
-  Scheme s = generalized_catmull_clark_scheme();
-  set_degree(s, degree);
-  SmoothingWeights w;
-  w.alpha = alpha;
-  w.beta = beta;
-  s.parameters.smoothing = {w};
-  return s;
-}
+using test::gcc;
 
 // The largest eigenvalue magnitude of Fourier frequency f, leaving out 1
 // (the affine eigenvalue, frequency 0).

@@ -17,6 +17,7 @@
 #include "subdiv/rules/catmull_clark.h"
 #include "subdiv/rules/doo_sabin.h"
 #include "support/bsplines.h"
+#include "support/gcc_schemes.h"
 #include "support/refine_options.h"
 #include "support/stencil_rows.h"
 #include "support/test_meshes.h"
@@ -24,23 +25,9 @@
 namespace subdiv {
 namespace {
 
+using test::gcc;
 using test::levels;
-
-Scheme midpoint(int degree) {
-  Scheme s = midpoint_scheme();
-  set_degree(s, degree);
-  return s;
-}
-
-Scheme gcc(int degree, double alpha, double beta) {
-  Scheme s = generalized_catmull_clark_scheme();
-  set_degree(s, degree);
-  SmoothingWeights w;
-  w.alpha = alpha;
-  w.beta = beta;
-  s.parameters.smoothing = {w};
-  return s;
-}
+using test::midpoint;
 
 // A closed n x m quad torus.
 PolygonMesh torus(int n, int m) {
