@@ -174,8 +174,7 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
     std::optional<MeshTopology> child_topology;
     PolygonMesh child;
     if (std::any_of(extraordinary.begin(), extraordinary.end(), on_boundary)) {
-      step = refine_stencil_table(level, scheme, one);
-      child = refine(level, scheme, one);
+      step = std::move(refine_stencils(level, scheme, one, &child).front());  // the child too, in one pass
       child_topology.emplace(child);
     }
     std::vector<const DualFaceOperator*> face_operators;
