@@ -34,13 +34,17 @@ for mesh in cube tetrahedron; do
     "$subdiv" refine "data/meshes/$mesh.obj" -s "$scheme" --triangulate -l 4 -o "out/${mesh}_${scheme}4.obj"
   done
 done
+# Kobbelt's interpolatory scheme reads quads: the cube, and the L (open, with corners).
+"$subdiv" refine data/meshes/cube.obj -s kobbelt -l 4 -o out/cube_kobbelt4.obj
+"$subdiv" refine data/meshes/l_shape.obj -s kobbelt -l 4 -o out/l_shape_kobbelt4.obj
 for scheme in loop catmull-clark butterfly modified-butterfly doo-sabin; do
   echo "== subdiv analyze -s $scheme -k 3..8"
   "$subdiv" analyze -s "$scheme" -k 3..8 --plot-spectrum "out/${scheme}_spectrum.svg" \
     --plot-charmap 5 "out/${scheme}_charmap5.png"
 done
-echo "== subdiv analyze -s sqrt3 -k 3..8 (two steps), and the generalized Catmull-Clark scheme's closed forms"
+echo "== subdiv analyze -s sqrt3 -k 3..8 (two steps), kobbelt, and the generalized Catmull-Clark scheme's closed forms"
 "$subdiv" analyze -s sqrt3 -k 3..8
+"$subdiv" analyze -s kobbelt -k 3..8
 "$subdiv" analyze -s gcc -k 3..8
 echo "== the L's concave corner: standard and piecewise-smooth rules"
 "$subdiv" refine data/meshes/l_shape.obj -s catmull-clark -l 4 -o out/l_shape_standard4.obj

@@ -403,6 +403,13 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
                                 std::string(scheme.name) + " needs a triangle mesh, but face " + std::to_string(f) +
                                 " has " + std::to_string(mesh.face_size(f)) +
                                 " vertices (triangulate it first, e.g. with --triangulate)");
+  if (scheme.needs_quads)
+    for (Index f = 0; f < mesh.face_count(); ++f)
+      if (mesh.face_size(f) != 4)
+        throw InvalidInputError(where(lines, &SourceLines::face_lines, static_cast<std::size_t>(f)) +
+                                std::string(scheme.name) + " needs a quad mesh, but face " + std::to_string(f) +
+                                " has " + std::to_string(mesh.face_size(f)) +
+                                " vertices (one bilinear or catmull-clark level first makes every face a quad)");
   return topology;
 }
 

@@ -7,6 +7,7 @@
 #include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/generalized_catmull_clark.h"
 #include "subdiv/rules/interpolatory_sqrt3.h"
+#include "subdiv/rules/kobbelt.h"
 #include "subdiv/rules/linear.h"
 #include "subdiv/rules/loop.h"
 #include "subdiv/rules/midedge.h"
@@ -27,10 +28,10 @@ const char* to_string(VertexRule r) {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 15> schemes = {
+  static const std::array<const Scheme*, 16> schemes = {
       &catmull_clark_scheme(), &loop_scheme(),     &loop_warren_scheme(), &butterfly_scheme(),
       &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(), &sqrt3_scheme(),
-      &interpolatory_sqrt3_scheme(), &four_eight_scheme(), &generalized_catmull_clark_scheme(),
+      &interpolatory_sqrt3_scheme(), &kobbelt_scheme(), &four_eight_scheme(), &generalized_catmull_clark_scheme(),
       &midpoint_scheme(), &bilinear_scheme(), &linear_scheme(), &quasi_4_8_scheme()};
   return schemes;
 }

@@ -189,6 +189,16 @@ run refine-four-eight-open 1 refine "$work/quad.obj" -s four-eight -o "$work/x.o
   stderr_one_line refine-four-eight-open && stderr_has refine-four-eight-open "needs a closed mesh"
 run analyze-four-eight 0 analyze -s four-eight -k 3..8 && stdout_has analyze-four-eight "period 2"
 grep -qE "^interior k=4 +25 +2 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze four-eight: k=4 row"
+run refine-kobbelt 0 refine "$meshes/cube.obj" -s kobbelt -l 2 -o "$work/kob.obj" --stats
+stdout_has refine-kobbelt "level 1: 26 vertices, 24 faces" && stdout_has refine-kobbelt "level 2: 98 vertices, 96 faces"
+run refine-kobbelt-open 0 refine "$work/quad.obj" -s kobbelt -l 2 -o "$work/kobq.obj"
+run refine-kobbelt-triangles 1 refine "$meshes/tetrahedron.obj" -s kobbelt -o "$work/x.obj" &&
+  stderr_one_line refine-kobbelt-triangles && stderr_has refine-kobbelt-triangles "tetrahedron.obj:7: kobbelt needs a quad mesh"
+run refine-kobbelt-tension 1 refine "$meshes/cube.obj" -s kobbelt --tension -0.5 -o "$work/x.obj" &&
+  stderr_one_line refine-kobbelt-tension && stderr_has refine-kobbelt-tension "kobbelt needs w > -1/2"
+run analyze-kobbelt 0 analyze -s kobbelt -k 3..12
+grep -qE "^interior k=4 +25 +2 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze kobbelt: k=4 row"
+[ "$(grep -cE "^interior k=[0-9]+ .* C1 " "$work/out")" = 10 ] && pass || fail "analyze kobbelt: not C1 at every valence"
 run refine-unknown 1 refine "$meshes/cube.obj" -s butterfly-x -o "$work/x.obj" && stderr_has refine-unknown "unknown scheme"
 run refine-nonmanifold 1 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" && stderr_has refine-nonmanifold "--allow-non-manifold"
 run refine-allow 0 refine "$data/nonmanifold_edge.obj" -o "$work/nm.obj" --allow-non-manifold

@@ -31,8 +31,11 @@ Scheme with_tension(const Scheme& scheme, std::optional<double> tension) {
   Scheme chosen = scheme;
   if (!tension) return chosen;
   if (!scheme.takes_tension)
-    throw InvalidInputError("--tension applies to butterfly and the curve scheme four-point, not to " +
+    throw InvalidInputError("--tension applies to butterfly, kobbelt and the curve scheme four-point, not to " +
                             std::string(scheme.name));
+  // Kobbelt's virtual points divide by 1 + 2w (rules/kobbelt.cpp).
+  if (scheme.name == "kobbelt" && !(*tension > -0.5))
+    throw InvalidInputError(fmt::format("--tension {}: kobbelt needs w > -1/2", *tension));
   chosen.parameters.tension = *tension;
   return chosen;
 }

@@ -207,6 +207,9 @@ struct Scheme {
   /// boundary would degenerate). The analysis lifts it: its ring mesh's outer
   /// boundary lies outside the neighbourhood it reads.
   bool needs_closed_mesh = false;
+  /// Refuses control meshes with faces other than quads (a scheme whose
+  /// rules read quads; its split keeps every face a quad).
+  bool needs_quads = false;
   /// Composite schemes (generalized Catmull-Clark, midpoint): one level is
   /// these steps in turn, R (a quad split), smoothing steps (identity
   /// splits) and possibly A, a dual split of the level's parent whose masks
