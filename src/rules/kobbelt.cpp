@@ -53,7 +53,9 @@
 //     without an ordered ring or next to a face that is not a quad): that linear
 //     extrapolation, 2v - u along the edge (u, v).
 // Where a face's line of edge points ends at a sharp or boundary edge e,
-// E(e') is extrapolated the same way, 2 E(e) - E(g).
+// E(e') is extrapolated the same way, 2 E(e) - E(g). An edge is sharp at a
+// level while its sharpness is above 0 there: semi-sharp creases are sharp
+// for ceil(s) levels, without the other schemes' fractional blend.
 // The analysis finds these rules C1 at every interior valence 3..12 and at
 // boundary sectors of 1..3 faces, not from 4 faces on.
 //
