@@ -63,6 +63,9 @@ BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, sqrt3, "sqrt3")->Args({158, 4, 1})->
 BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, interpolatory_sqrt3, "interpolatory-sqrt3")
     ->Args({158, 4, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Refine_QuadScheme, four_eight, "four-eight")->Args({158, 6, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+// Kobbelt's interpolatory quad scheme (quad split, same output as
+// Catmull-Clark's) against Catmull-Clark and, per output face, Loop.
+BENCHMARK_CAPTURE(BM_Refine_QuadScheme, kobbelt, "kobbelt")->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Stencil path: build the table once (coarse -> level 2; arguments: mesh
 // size, levels, threads), then re-apply it to new positions, as for animation.

@@ -183,11 +183,11 @@ void add_beyond(const LevelView& level, Index v, Index e, double s, MaskBuilder&
   }
   const int n = static_cast<int>(edges.size());
   if (t.vertex_kind(v) != VertexKind::interior || t.vertex_face_count(v) != n || n < 3) return extrapolate();
+  const int i = ring_position(t, v, e);
+  if (n == 4) return mask.add(t.other_vertex(edges[static_cast<std::size_t>((i + 2) % 4)], v), s);
   const auto corners = t.vertex_corners(v);
   for (const Index c : corners)
     if (t.face_size(t.corner_face(c)) != 4) return extrapolate();
-  const int i = ring_position(t, v, e);
-  if (n == 4) return mask.add(t.other_vertex(edges[static_cast<std::size_t>((i + 2) % 4)], v), s);
   const KobbeltVirtualWeights w = kobbelt_virtual_point_weights(n, i, level.parameters.tension);
   for (int j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
