@@ -103,9 +103,14 @@ void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const 
 }
 
 // The same over every child vertex, face points first: edge and vertex masks
-// may weight the new face points (MaskBuilder), which must exist by then.
+// may weight the new face points (MaskBuilder), which must exist by then;
+// or last, where face masks weight the new edge points.
 template <typename Fn>
 void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Fn&& fn) {
+  if (scheme.face_points_read_edge_points) {
+    for_each_child_mask(parent, scheme, map, map.edge_points, map.child_vertex_count, fn);
+    return for_each_child_mask(parent, scheme, map, 0, map.edge_points, fn);
+  }
   for_each_child_mask(parent, scheme, map, 0, map.edge_points, fn);
   for_each_child_mask(parent, scheme, map, map.edge_points, map.child_vertex_count, fn);
 }
@@ -222,7 +227,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
 }
 
 // The mask applied to positions: parent vertices from `parent`, new face
-// points from `child` (already computed).
+// and edge points from `child` (already computed).
 Vec3 apply_mask(const MaskBuilder& mask, const SplitMap& map, const Vec3* parent, const Vec3* child) {
   Vec3 p;
   const auto vs = mask.vertices();
@@ -231,6 +236,9 @@ Vec3 apply_mask(const MaskBuilder& mask, const SplitMap& map, const Vec3* parent
   const auto fs = mask.face_points();
   const auto fws = mask.face_point_weights();
   for (std::size_t j = 0; j < fs.size(); ++j) p += fws[j] * child[map.face_point(fs[j])];
+  const auto es = mask.edge_points();
+  const auto ews = mask.edge_point_weights();
+  for (std::size_t j = 0; j < es.size(); ++j) p += ews[j] * child[map.edge_point(es[j])];
   return p;
 }
 
@@ -248,6 +256,12 @@ void apply_mask(const MaskBuilder& mask, const SplitMap& map, const double* pare
   for (std::size_t j = 0; j < fs.size(); ++j) {
     const double* src = child + static_cast<std::size_t>(map.face_point(fs[j])) * k;
     for (std::size_t c = 0; c < k; ++c) out[c] += fws[j] * src[c];
+  }
+  const auto es = mask.edge_points();
+  const auto ews = mask.edge_point_weights();
+  for (std::size_t j = 0; j < es.size(); ++j) {
+    const double* src = child + static_cast<std::size_t>(map.edge_point(es[j])) * k;
+    for (std::size_t c = 0; c < k; ++c) out[c] += ews[j] * src[c];
   }
 }
 
@@ -273,11 +287,15 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const Parent
 
 // The stencil rows of one level. Parent vertex p contributes row p of
 // `composed` (coarse -> parent level) when given, else p itself; a new face
-// point contributes its own row, recorded first. Rows come out merged and
-// sorted by source.
+// point contributes its own row, recorded first (or a new edge point its
+// row, recorded first where face masks read edge points). Rows come out
+// merged and sorted by source.
 StencilTable record_stencils(const ParentLevel& view, const Scheme& scheme, const SplitMap& map,
                              const StencilTable* composed) {
-  StencilTable table(composed ? composed->source_count() : view.topology.vertex_count());
+  const Index sources = composed ? composed->source_count() : view.topology.vertex_count();
+  StencilTable table(sources);
+  StencilTable edge_first(sources);  // rows edge_points .. end, where recorded before the face points
+  const bool faces_last = scheme.face_points_read_edge_points;
   tbb::enumerable_thread_specific<MaskBuilder> masks;
   auto fill = [&](Index i, detail::RowAccumulator& row) {
     MaskBuilder& mask = masks.local();
@@ -290,9 +308,17 @@ StencilTable record_stencils(const ParentLevel& view, const Scheme& scheme, cons
     }
     for (std::size_t j = 0; j < mask.face_points().size(); ++j)
       row.add_row(table, map.face_point(mask.face_points()[j]), mask.face_point_weights()[j]);
+    for (std::size_t j = 0; j < mask.edge_points().size(); ++j)
+      row.add_row(edge_first, map.edge_point(mask.edge_points()[j]) - map.edge_points, mask.edge_point_weights()[j]);
   };
+  if (!faces_last) {
+    detail::append_rows(table, 0, map.edge_points, fill);
+    detail::append_rows(table, map.edge_points, map.child_vertex_count, fill);
+    return table;
+  }
+  detail::append_rows(edge_first, map.edge_points, map.child_vertex_count, fill);
   detail::append_rows(table, 0, map.edge_points, fill);
-  detail::append_rows(table, map.edge_points, map.child_vertex_count, fill);
+  for (Index r = 0; r < edge_first.row_count(); ++r) table.append_row(edge_first.row_vertices(r), edge_first.row_weights(r));
   return table;
 }
 

@@ -9,7 +9,8 @@
 //   face point         the four-point rule applied to new edge points: for
 //     the pair of opposite edges e, g of the face, (1/2 + w)(E(e) + E(g))
 //     - w (E(e') + E(g')), e' the edge opposite e in the quad across e;
-//     the face point is the mean of the two pairs' values.
+//     the face point is the mean of the two pairs' values. Its mask weights
+//     the new edge points themselves (Scheme::face_points_read_edge_points).
 // On a regular grid this is the tensor product of the four-point curve
 // scheme (the two pairs agree), which is what the scheme generalises.
 //
@@ -218,20 +219,20 @@ Index edge_beyond(const LevelView& level, Index c) {
   return t.corner_edge(t.corner_next(t.corner_next(across)));
 }
 
-// Adds s times the four-point rule along the line through the edge points
-// of corner c's edge and of the opposite edge (corner g).
+// Adds s times the four-point rule along the line through the new edge
+// points of corner c's edge and of the opposite edge (corner g).
 void add_face_line(const LevelView& level, Index c, Index g, double s, MaskBuilder& mask) {
   const double w = level.parameters.tension;
   const Index e = level.topology.corner_edge(c), f = level.topology.corner_edge(g);
-  add_edge_point(level, e, s * (0.5 + w), mask);
-  add_edge_point(level, f, s * (0.5 + w), mask);
+  mask.add_edge_point(e, s * (0.5 + w));
+  mask.add_edge_point(f, s * (0.5 + w));
   for (const auto& [end, other] : {std::pair{c, f}, std::pair{g, e}}) {
     const Index beyond = edge_beyond(level, end);
     if (beyond != kInvalidIndex) {
-      add_edge_point(level, beyond, -s * w, mask);
+      mask.add_edge_point(beyond, -s * w);
     } else {  // 2 E(end) - E(other)
-      add_edge_point(level, level.topology.corner_edge(end), -2.0 * s * w, mask);
-      add_edge_point(level, other, s * w, mask);
+      mask.add_edge_point(level.topology.corner_edge(end), -2.0 * s * w);
+      mask.add_edge_point(other, s * w);
     }
   }
 }
@@ -266,6 +267,7 @@ const Scheme& kobbelt_scheme() {
              vertex_point};
     s.takes_tension = true;
     s.needs_quads = true;
+    s.face_points_read_edge_points = true;
     return s;
   }();
   return scheme;

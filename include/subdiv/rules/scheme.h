@@ -127,7 +127,9 @@ struct LevelView {
 /// Sdc masks weight face centres: a Catmull-Clark vertex mask then has 9
 /// entries instead of 21. The fast path reads those face points from the
 /// child level it has just computed; the stencil recorder substitutes their
-/// face masks, so recorded tables are over parent vertices only.
+/// face masks, so recorded tables are over parent vertices only. A scheme
+/// whose face points are made from new edge points (Kobbelt's) weights those
+/// instead, the other way round (Scheme::face_points_read_edge_points).
 class MaskBuilder {
  public:
   void clear() {
@@ -135,6 +137,8 @@ class MaskBuilder {
     weights_.clear();
     face_points_.clear();
     face_point_weights_.clear();
+    edge_points_.clear();
+    edge_point_weights_.clear();
     scale_ = 1.0;
   }
   void add(Index vertex, double weight) {
@@ -146,24 +150,36 @@ class MaskBuilder {
     face_points_.push_back(face);
     face_point_weights_.push_back(scale_ * weight);
   }
+  /// Weight on the new edge point of parent edge `edge` (quad split, face
+  /// masks of schemes with Scheme::face_points_read_edge_points only).
+  void add_edge_point(Index edge, double weight) {
+    edge_points_.push_back(edge);
+    edge_point_weights_.push_back(scale_ * weight);
+  }
   void set_scale(double scale) { scale_ = scale; }
   void reserve(std::size_t entries) {
     vertices_.reserve(entries);
     weights_.reserve(entries);
     face_points_.reserve(entries);
     face_point_weights_.reserve(entries);
+    edge_points_.reserve(entries);
+    edge_point_weights_.reserve(entries);
   }
   std::span<const Index> vertices() const { return vertices_; }
   std::span<const double> weights() const { return weights_; }
   std::span<const Index> face_points() const { return face_points_; }
   std::span<const double> face_point_weights() const { return face_point_weights_; }
-  std::size_t size() const { return vertices_.size() + face_points_.size(); }
+  std::span<const Index> edge_points() const { return edge_points_; }
+  std::span<const double> edge_point_weights() const { return edge_point_weights_; }
+  std::size_t size() const { return vertices_.size() + face_points_.size() + edge_points_.size(); }
 
  private:
   std::vector<Index> vertices_;
   std::vector<double> weights_;
   std::vector<Index> face_points_;
   std::vector<double> face_point_weights_;
+  std::vector<Index> edge_points_;
+  std::vector<double> edge_point_weights_;
   double scale_ = 1.0;
 };
 
@@ -210,6 +226,11 @@ struct Scheme {
   /// Refuses control meshes with faces other than quads (a scheme whose
   /// rules read quads; its split keeps every face a quad).
   bool needs_quads = false;
+  /// Quad split: the face mask weights the level's new edge points
+  /// (MaskBuilder::add_edge_point), so the engine makes edge and vertex
+  /// points first and face points last; the edge and vertex masks must then
+  /// not weight face points.
+  bool face_points_read_edge_points = false;
   /// Composite schemes (generalized Catmull-Clark, midpoint): one level is
   /// these steps in turn, R (a quad split), smoothing steps (identity
   /// splits) and possibly A, a dual split of the level's parent whose masks
