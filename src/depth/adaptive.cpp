@@ -299,6 +299,10 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
   if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": adaptive refinement does not cover composite schemes (their steps have no per-face rules)");
   if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) + ": adaptive refinement covers the quad and triangle splits");
+  if (interpolates_with_wide_masks(scheme, options.depth))
+    throw InvalidInputError(std::string(scheme.name) +
+                            ": no adaptive refinement for an interpolating scheme: its vertices are on the limit "
+                            "surface at every level, so their distance to it says nothing about the faces in between");
   return Hierarchy(mesh, scheme, eps, options).result();
 }
 

@@ -122,21 +122,6 @@ int max_valence(const PolygonMesh& mesh) {
   return worst;
 }
 
-// An interpolating scheme whose rules reach beyond the one-ring (the
-// Butterfly schemes): the limit mask at the regular configuration is the
-// centre alone, yet new vertices leave the control mesh's faces (unlike the
-// linear schemes, whose control mesh is its own limit).
-bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& options) {
-  AnalysisOptions analysis;
-  analysis.characteristic_map = false;
-  analysis.rules = options.refine;
-  const ConfigurationAnalysis a =
-      analyze(scheme, {Configuration::Kind::interior, regular_faces(scheme), CornerType::convex}, analysis);
-  if (!a.limit_mask || a.matrix.rings <= 1) return false;
-  const Eigen::VectorXd& mask = *a.limit_mask;
-  return std::abs(mask[0] - 1.0) < 1e-9 && mask.tail(mask.size() - 1).cwiseAbs().maxCoeff() < 1e-9;
-}
-
 // Doo-Sabin (docs/design.md, "Depth"): the paper's Theorem 5 from the level
 // at which every extraordinary face (!= 4 sides) has the canonical two-ring
 // neighbourhood, plus a term for those faces from powers of their local
@@ -238,6 +223,21 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
 }
 
 }  // namespace
+
+// An interpolating scheme whose rules reach beyond the one-ring (the
+// Butterfly schemes): the limit mask at the regular configuration is the
+// centre alone, yet new vertices leave the control mesh's faces (unlike the
+// linear schemes, whose control mesh is its own limit).
+bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& options) {
+  AnalysisOptions analysis;
+  analysis.characteristic_map = false;
+  analysis.rules = options.refine;
+  const ConfigurationAnalysis a =
+      analyze(scheme, {Configuration::Kind::interior, regular_faces(scheme), CornerType::convex}, analysis);
+  if (!a.limit_mask || a.matrix.rings <= 1) return false;
+  const Eigen::VectorXd& mask = *a.limit_mask;
+  return std::abs(mask[0] - 1.0) < 1e-9 && mask.tail(mask.size() - 1).cwiseAbs().maxCoeff() < 1e-9;
+}
 
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
   if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no depth bound for composite schemes yet: it needs limit positions");

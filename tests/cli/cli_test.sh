@@ -196,6 +196,10 @@ run refine-kobbelt-triangles 1 refine "$meshes/tetrahedron.obj" -s kobbelt -o "$
   stderr_one_line refine-kobbelt-triangles && stderr_has refine-kobbelt-triangles "tetrahedron.obj:7: kobbelt needs a quad mesh"
 run refine-kobbelt-tension 1 refine "$meshes/cube.obj" -s kobbelt --tension -0.5 -o "$work/x.obj" &&
   stderr_one_line refine-kobbelt-tension && stderr_has refine-kobbelt-tension "kobbelt needs w > -1/2"
+run adaptive-kobbelt 1 adaptive "$meshes/cube.obj" -s kobbelt --eps 0.01 -o "$work/x.obj" &&
+  stderr_one_line adaptive-kobbelt && stderr_has adaptive-kobbelt "no adaptive refinement for an interpolating scheme"
+run adaptive-butterfly 1 adaptive "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 -o "$work/x.obj" &&
+  stderr_one_line adaptive-butterfly && stderr_has adaptive-butterfly "no adaptive refinement for an interpolating scheme"
 run analyze-kobbelt 0 analyze -s kobbelt -k 3..12
 grep -qE "^interior k=4 +25 +2 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze kobbelt: k=4 row"
 [ "$(grep -cE "^interior k=[0-9]+ .* C1 " "$work/out")" = 10 ] && pass || fail "analyze kobbelt: not C1 at every valence"

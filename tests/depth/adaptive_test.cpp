@@ -17,7 +17,9 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/triangulate.h"
 #include "subdiv/mesh/validation.h"
+#include "subdiv/rules/butterfly.h"
 #include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/kobbelt.h"
 #include "subdiv/rules/loop.h"
 #include "depth/depth_test_meshes.h"
 #include "support/test_meshes.h"
@@ -106,6 +108,15 @@ TEST(Adaptive, RefusesBadAccuracy) {
   AdaptiveOptions shallow;
   shallow.max_level = 1;
   EXPECT_THROW((void)adaptive_refine(cube, catmull_clark_scheme(), 1e-6, shallow), InvalidInputError);
+}
+
+// Interpolating schemes with wide masks: every vertex is on the limit
+// surface, so a vertex-to-limit accuracy would keep the control mesh.
+TEST(Adaptive, RefusesInterpolatingSchemes) {
+  const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
+  EXPECT_THROW((void)adaptive_refine(cube, kobbelt_scheme(), 0.01), InvalidInputError);
+  EXPECT_THROW((void)adaptive_refine(triangulate(cube), butterfly_scheme(), 0.01), InvalidInputError);
+  EXPECT_THROW((void)adaptive_refine(triangulate(cube), modified_butterfly_scheme(), 0.01), InvalidInputError);
 }
 
 }  // namespace

@@ -27,6 +27,12 @@ struct DepthOptions {
 /// Throws as refine() does for meshes it cannot refine.
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options = {});
 
+/// Whether the scheme interpolates with masks wider than a face (the
+/// Butterfly schemes, Kobbelt's): its vertices are on the limit surface from
+/// the start, so their distance to it bounds nothing; depth_bound and
+/// adaptive_refine refuse such schemes.
+bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& options = {});
+
 /// Size of the mesh after `level` uniform steps, counted from the control
 /// mesh's topology alone (nothing is refined).
 struct LevelCost {
