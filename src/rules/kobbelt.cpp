@@ -57,7 +57,7 @@
 // E(e') is extrapolated the same way, 2 E(e) - E(g). An edge is sharp at a
 // level while its sharpness is above 0 there: semi-sharp creases are sharp
 // for ceil(s) levels, without the other schemes' fractional blend.
-// The analysis finds these rules C1 at every interior valence 3..12 and at
+// The analysis finds these rules C1 at every interior valence 3..32 and at
 // boundary sectors of 1..3 faces, not from 4 faces on.
 //
 // The paper's own boundary and crease rules are not in any source reached;
