@@ -225,7 +225,7 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
 }  // namespace
 
 // An interpolating scheme whose rules reach beyond the one-ring (the
-// Butterfly schemes): the limit mask at the regular configuration is the
+// Butterfly schemes, Kobbelt's): the limit mask at the regular configuration is the
 // centre alone, yet new vertices leave the control mesh's faces (unlike the
 // linear schemes, whose control mesh is its own limit).
 bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& options) {
