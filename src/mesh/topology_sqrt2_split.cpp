@@ -28,7 +28,8 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
     if (p.edge_face_count(e) != 2) return std::nullopt;  // closed manifold meshes only
   const Index vertex_point = nf;
 
-  // Closed, consistently oriented meshes without a repeated corner vertex:
+  // Closed meshes (ordered rings: consistently oriented) without a repeated
+  // corner vertex:
   // a face's spokes, in increasing v, are numbered from its first corner on,
   // so the spoke of corner c is its face's first corner plus the rank of c's
   // vertex among the face's.
@@ -45,10 +46,6 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
           if (j != i && v[j] == v[i]) simple = false;
         }
         spoke_of[static_cast<std::size_t>(first + i)] = first + rank;
-        const Index e = p.corner_edge_[first + i];
-        const auto sides = p.edge_corners(e);
-        const Index across = sides[0] == first + i ? sides[1] : sides[0];
-        if (p.corner_vertex_[across] != v[i + 1 < n ? i + 1 : 0]) simple = false;  // the other side runs the other way
       }
     }
   });
@@ -150,7 +147,8 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
       ring_edges.resize(static_cast<std::size_t>(k));
       for (Index j = 0; j < k; ++j) {
         const Index e = edges[static_cast<std::size_t>(j)];
-        ring_corners[static_cast<std::size_t>(j)] = 4 * e + (p.corner_vertex_[p.edge_corners(e)[0]] == v ? 0 : 2);
+        // Corner j leaves v along e_j: V(a) if it is e_j's first side, else V(b).
+        ring_corners[static_cast<std::size_t>(j)] = 4 * e + (p.edge_corners(e)[0] == faces[static_cast<std::size_t>(j)] ? 0 : 2);
         ring_edges[static_cast<std::size_t>(j)] = spoke_of[static_cast<std::size_t>(faces[static_cast<std::size_t>(j == 0 ? k - 1 : j - 1)])];
       }
       write_ring(cv, ring_corners.data(), ring_edges.data(), k);

@@ -46,9 +46,9 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
   auto next_of = [](Index corner) { return corner % 3 == 2 ? corner - 2 : corner + 1; };
   auto prev_of = [](Index corner) { return corner % 3 == 0 ? corner + 2 : corner - 1; };
 
-  // Closed, consistently oriented manifold meshes only; a face next to
-  // itself, two faces sharing two edges (merged flipped edges) or a repeated
-  // corner vertex go to the generic build. Per face: its neighbours across its three edges, and its
+  // Closed manifold meshes only (ordered rings: consistently oriented); a
+  // face next to itself, two faces sharing two edges (merged flipped edges)
+  // or a repeated corner vertex go to the generic build. Per face: its neighbours across its three edges, and its
   // number of child edges (partners g > f, then three spokes).
   std::vector<Index> neighbour(3 * static_cast<std::size_t>(nf));
   std::vector<Index> first(static_cast<std::size_t>(nf) + 1, 0);
@@ -67,9 +67,7 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
           continue;
         }
         const auto sides = p.edge_corners(e);
-        const Index across = sides[0] == 3 * f + i ? sides[1] : sides[0];
-        if (p.corner_vertex_[across] != v[(i + 1) % 3]) simple = false;  // the other side runs the other way
-        g[i] = face_of(across);
+        g[i] = face_of(sides[0] == 3 * f + i ? sides[1] : sides[0]);
         if (g[i] == f) simple = false;
         n += g[i] > f;
       }
@@ -144,8 +142,6 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
   }
   t.lay_out_vertex_incidence();
 
-  // The child corner at V(v) in the child faces of parent edge e.
-  auto corner_at_vertex = [&](Index e, Index v) { return 6 * e + (p.corner_vertex_[p.edge_corners(e)[0]] == v ? 0 : 3); };
   // Face j of a ring leaves its vertex along edge j and enters along j + 1;
   // rings start at their smallest corner (the generic walk's order).
   auto write_ring = [&](Index cv, const Index* ring_corners, const Index* ring_edges, Index n) {
@@ -201,7 +197,10 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
       ring_corners.resize(static_cast<std::size_t>(k));
       ring_edges.resize(static_cast<std::size_t>(k));
       for (Index j = 0; j < k; ++j) {
-        ring_corners[static_cast<std::size_t>(j)] = corner_at_vertex(edges[static_cast<std::size_t>(j)], v);
+        // Corner j leaves v along e_j: the first child face's V corner if it
+        // is e_j's first side (running from a), else the second's.
+        const Index e = edges[static_cast<std::size_t>(j)];
+        ring_corners[static_cast<std::size_t>(j)] = 6 * e + (p.edge_corners(e)[0] == faces[static_cast<std::size_t>(j)] ? 0 : 3);
         ring_edges[static_cast<std::size_t>(j)] = spoke_of[static_cast<std::size_t>(faces[static_cast<std::size_t>(j == 0 ? k - 1 : j - 1)])];
       }
       write_ring(cv, ring_corners.data(), ring_edges.data(), k);
