@@ -74,26 +74,13 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
       c[0] = spoke_of[Ga], c[1] = spoke_of[Gb], c[2] = spoke_of[Fb], c[3] = spoke_of[Fa];
     }
   });
-  // Each spoke (F(f), V(v)), from f's corner c at v: its sides are in the
-  // child faces of the edge leaving c (at F(F) if f is that edge's F, else
-  // at F(G)) and of the edge entering c (at V(b) if f is its F, else V(a)).
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
-    for (Index f = range.begin(); f != range.end(); ++f)
-      for (Index c = p.face_first_corner(f); c < p.face_first_corner(f) + p.face_size(f); ++c) {
-        const Index leaving = p.corner_edge_[c], prev = p.corner_prev(c), entering = p.corner_edge_[prev];
-        const Index here = 4 * leaving + (p.edge_corners(leaving)[0] == c ? 3 : 1);
-        const Index other = 4 * entering + (p.edge_corners(entering)[0] == prev ? 2 : 0);
-        const auto spoke = static_cast<std::size_t>(spoke_of[static_cast<std::size_t>(c)]);
-        t.edge_vertices_[spoke] = {f, vertex_point + p.corner_vertex_[c]};
-        t.edge_corners_[2 * spoke] = std::min(here, other);
-        t.edge_corners_[2 * spoke + 1] = std::max(here, other);
-      }
-  });
-
   const Index child_vertices = nf + nv;
   detail::assign_large(t.vertex_corner_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
   detail::assign_large(t.vertex_edge_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
-  for (Index f = 0; f < nf; ++f) t.vertex_corner_offsets_[f + 1] = t.vertex_edge_offsets_[f + 1] = p.face_size(f);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 16384), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f)
+      t.vertex_corner_offsets_[f + 1] = t.vertex_edge_offsets_[f + 1] = p.face_size(f);
+  });
   for (Index v = 0; v < nv; ++v) {
     t.vertex_corner_offsets_[vertex_point + v + 1] = p.vertex_face_count(v);
     t.vertex_edge_offsets_[vertex_point + v + 1] = p.valence(v);
@@ -124,6 +111,16 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
         const Index c = first + i, e = p.corner_edge_[c];
         ring_corners[static_cast<std::size_t>(i)] = 4 * e + (p.edge_corners(e)[0] == c ? 3 : 1);
         ring_edges[static_cast<std::size_t>(i)] = spoke_of[static_cast<std::size_t>(c)];
+        // The spoke to v_i: its sides are this ring corner (at F(F) if f is
+        // e's F, else at F(G)) and, in the child face of the edge entering
+        // v_i, V(b) if f is that edge's F, else V(a).
+        const Index prev = p.corner_prev(c), entering = p.corner_edge_[prev];
+        const Index here = ring_corners[static_cast<std::size_t>(i)];
+        const Index other = 4 * entering + (p.edge_corners(entering)[0] == prev ? 2 : 0);
+        const auto spoke = static_cast<std::size_t>(ring_edges[static_cast<std::size_t>(i)]);
+        t.edge_vertices_[spoke] = {f, vertex_point + p.corner_vertex_[c]};
+        t.edge_corners_[2 * spoke] = std::min(here, other);
+        t.edge_corners_[2 * spoke + 1] = std::max(here, other);
       }
       write_ring(f, ring_corners.data(), ring_edges.data(), n);
     }
