@@ -101,22 +101,24 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
   };
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     std::vector<Index> ring_corners, ring_edges;
+    std::vector<char> first_side;  // f is e_i's F, v_i its a
     for (Index f = range.begin(); f != range.end(); ++f) {
       // Around F(f): the child face of edge e_i (v_i -> v_{i+1} in f) leaves
       // along the spoke to v_i and enters along the one to v_{i+1}.
       const Index n = p.face_size(f), first = p.face_first_corner(f);
       ring_corners.resize(static_cast<std::size_t>(n));
       ring_edges.resize(static_cast<std::size_t>(n));
+      first_side.resize(static_cast<std::size_t>(n));
+      for (Index i = 0; i < n; ++i)
+        first_side[static_cast<std::size_t>(i)] = p.edge_corners(p.corner_edge_[first + i])[0] == first + i;
       for (Index i = 0; i < n; ++i) {
-        const Index c = first + i, e = p.corner_edge_[c];
-        ring_corners[static_cast<std::size_t>(i)] = 4 * e + (p.edge_corners(e)[0] == c ? 3 : 1);
+        const Index c = first + i, prev = i == 0 ? n - 1 : i - 1;
+        ring_corners[static_cast<std::size_t>(i)] = 4 * p.corner_edge_[c] + (first_side[static_cast<std::size_t>(i)] ? 3 : 1);
         ring_edges[static_cast<std::size_t>(i)] = spoke_of[static_cast<std::size_t>(c)];
-        // The spoke to v_i: its sides are this ring corner (at F(F) if f is
-        // e's F, else at F(G)) and, in the child face of the edge entering
-        // v_i, V(b) if f is that edge's F, else V(a).
-        const Index prev = p.corner_prev(c), entering = p.corner_edge_[prev];
+        // The spoke to v_i: its sides are this ring corner and, in the child
+        // face of e_prev (entering v_i), V(b) if f is e_prev's F, else V(a).
         const Index here = ring_corners[static_cast<std::size_t>(i)];
-        const Index other = 4 * entering + (p.edge_corners(entering)[0] == prev ? 2 : 0);
+        const Index other = 4 * p.corner_edge_[first + prev] + (first_side[static_cast<std::size_t>(prev)] ? 2 : 0);
         const auto spoke = static_cast<std::size_t>(ring_edges[static_cast<std::size_t>(i)]);
         t.edge_vertices_[spoke] = {f, vertex_point + p.corner_vertex_[c]};
         t.edge_corners_[2 * spoke] = std::min(here, other);

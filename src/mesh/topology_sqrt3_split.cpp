@@ -44,7 +44,6 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
   const Index vertex_point = nf;
   auto face_of = [](Index corner) { return corner / 3; };
   auto next_of = [](Index corner) { return corner % 3 == 2 ? corner - 2 : corner + 1; };
-  auto prev_of = [](Index corner) { return corner % 3 == 0 ? corner + 2 : corner - 1; };
 
   // Closed manifold meshes only (ordered rings: consistently oriented); a
   // face next to itself, two faces sharing two edges (merged flipped edges)
@@ -158,19 +157,21 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
     for (Index f = range.begin(); f != range.end(); ++f) {
       // Around F(f): at v_i from e_i (leaving along the spoke to v_i), then at
       // v_{i+1} from e_i (leaving along e_i's flipped edge).
-      Index ring_corners[6], ring_edges[6];
+      Index ring_corners[6], ring_edges[6], e[3];
+      bool first_side[3];  // f is e_i's F, v_i its a
       for (Index i = 0; i < 3; ++i) {
-        const Index c = 3 * f + i, e = p.corner_edge_[c];
-        const bool first_side = p.edge_corners(e)[0] == c;  // f is e's F, v_i its a
-        ring_corners[2 * i] = 6 * e + (first_side ? 2 : 5);
-        ring_corners[2 * i + 1] = 6 * e + (first_side ? 4 : 1);
+        e[i] = p.corner_edge_[3 * f + i];
+        first_side[i] = p.edge_corners(e[i])[0] == 3 * f + i;
+      }
+      for (Index i = 0; i < 3; ++i) {
+        const Index c = 3 * f + i, prev = i == 0 ? 2 : i - 1;
+        ring_corners[2 * i] = 6 * e[i] + (first_side[i] ? 2 : 5);
+        ring_corners[2 * i + 1] = 6 * e[i] + (first_side[i] ? 4 : 1);
         ring_edges[2 * i] = spoke_of[static_cast<std::size_t>(c)];
-        ring_edges[2 * i + 1] = flipped_of[static_cast<std::size_t>(e)];
-        // The spoke to v_i: its sides are in the child faces of e (leaving
-        // v_i) and of the edge entering v_i.
-        const Index entering = p.corner_edge_[prev_of(c)];
-        const Index other = 6 * entering + (p.edge_corners(entering)[0] == prev_of(c) ? 3 : 0);
-        const Index here = ring_corners[2 * i];
+        ring_edges[2 * i + 1] = flipped_of[static_cast<std::size_t>(e[i])];
+        // The spoke to v_i: its sides are in the child faces of e_i (leaving
+        // v_i) and of e_prev (entering it: at V(b) if f is e_prev's F).
+        const Index here = ring_corners[2 * i], other = 6 * e[prev] + (first_side[prev] ? 3 : 0);
         const auto spoke = static_cast<std::size_t>(ring_edges[2 * i]);
         t.edge_vertices_[spoke] = {f, vertex_point + p.corner_vertex_[c]};
         t.edge_corners_[2 * spoke] = std::min(here, other);
