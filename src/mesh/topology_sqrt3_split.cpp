@@ -47,8 +47,9 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
 
   // Closed manifold meshes only (ordered rings: consistently oriented); a
   // face next to itself, two faces sharing two edges (merged flipped edges)
-  // or a repeated corner vertex go to the generic build. Per face: its neighbours across its three edges, and its
-  // number of child edges (partners g > f, then three spokes).
+  // or a repeated corner vertex go to the generic build. Per face: its
+  // neighbours across its three edges, and its number of child edges
+  // (partners g > f, then three spokes).
   std::vector<Index> neighbour(3 * static_cast<std::size_t>(nf));
   std::vector<Index> first(static_cast<std::size_t>(nf) + 1, 0);
   std::atomic<bool> simple = true;
