@@ -270,14 +270,12 @@ void MeshTopology::lay_out_vertex_incidence() {
 }
 
 void MeshTopology::build_boundary_loops() {
-  detail::UnionFind sets(vertex_count());
   std::vector<Index> boundary_edges;
   for (Index e = 0; e < edge_count(); ++e)
-    if (is_boundary_edge(e)) {
-      boundary_edges.push_back(e);
-      sets.unite(edge_vertices_[e][0], edge_vertices_[e][1]);
-    }
-  if (boundary_edges.empty()) return;
+    if (is_boundary_edge(e)) boundary_edges.push_back(e);
+  if (boundary_edges.empty()) return;  // closed: no per-vertex sets to build
+  detail::UnionFind sets(vertex_count());
+  for (const Index e : boundary_edges) sets.unite(edge_vertices_[e][0], edge_vertices_[e][1]);
 
   // Group boundary edges by component root; components are numbered by their
   // smallest vertex, so the loop order is deterministic.

@@ -5,9 +5,12 @@
 // parent edge e whose first side runs a -> b in face F (G the other side).
 // Every child edge is a spoke (F(f), V(v)) from a face point to one of its
 // face's vertices: face f's spokes, in increasing v, are numbered from its
-// first parent corner on, which is the generic (min, max) order.
+// first parent corner on, which is the generic (min, max) order. Every array
+// is written by parallel loops over parent faces, edges or vertices, each
+// element by one iteration (each parent corner knows its spoke).
 
 #include <algorithm>
+#include <atomic>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -25,21 +28,28 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
     if (p.edge_face_count(e) != 2) return std::nullopt;  // closed manifold meshes only
   const Index vertex_point = nf;
 
-  // Each face's vertices, sorted: the order of its spokes.
-  std::vector<Index> sorted(p.corner_vertex_);
-  bool simple = true;
-  for (Index f = 0; f < nf && simple; ++f) {
-    auto* begin = sorted.data() + p.face_first_corner(f);
-    auto* end = begin + p.face_size(f);
-    std::sort(begin, end);
-    if (std::adjacent_find(begin, end) != end) simple = false;
-  }
+  // Closed meshes (ordered rings: consistently oriented) without a repeated
+  // corner vertex:
+  // a face's spokes, in increasing v, are numbered from its first corner on,
+  // so the spoke of corner c is its face's first corner plus the rank of c's
+  // vertex among the face's.
+  std::vector<Index> spoke_of(static_cast<std::size_t>(nc));
+  std::atomic<bool> simple = true;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f) {
+      const Index first = p.face_first_corner(f), n = p.face_size(f);
+      const Index* v = p.corner_vertex_.data() + first;
+      for (Index i = 0; i < n; ++i) {
+        Index rank = 0;
+        for (Index j = 0; j < n; ++j) {
+          rank += v[j] < v[i];
+          if (j != i && v[j] == v[i]) simple = false;
+        }
+        spoke_of[static_cast<std::size_t>(first + i)] = first + rank;
+      }
+    }
+  });
   if (!simple) return std::nullopt;
-  auto face_of = [&](Index corner) { return p.corner_face(corner); };
-  auto spoke = [&](Index f, Index v) {
-    const Index* begin = sorted.data() + p.face_first_corner(f);
-    return p.face_first_corner(f) + static_cast<Index>(std::lower_bound(begin, begin + p.face_size(f), v) - begin);
-  };
 
   MeshTopology t;
   t.face_offsets_ = child.face_offsets;
@@ -50,33 +60,27 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
   detail::assign_large(t.corner_edge_, child_corners);
   detail::assign_large(t.edge_vertices_, child_edges);
   detail::assign_large(t.edge_corner_offsets_, child_edges + 1);
-  for (std::size_t e = 0; e <= child_edges; ++e) t.edge_corner_offsets_[e] = static_cast<Index>(2 * e);  // all interior
   detail::assign_large(t.edge_corners_, 2 * child_edges);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, child_edges + 1, 16384), [&](const tbb::blocked_range<std::size_t>& range) {
+    for (std::size_t e = range.begin(); e != range.end(); ++e) t.edge_corner_offsets_[e] = static_cast<Index>(2 * e);  // all interior
+  });
 
   tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
     for (Index e = range.begin(); e != range.end(); ++e) {
       const auto sides = p.edge_corners(e);
-      const Index F = face_of(sides[0]), G = face_of(sides[1]);
-      const Index a = p.corner_vertex_[sides[0]], b = p.corner_vertex_[p.corner_next(sides[0])];
+      // F's side runs a -> b, G's b -> a.
+      const Index Fa = sides[0], Fb = p.corner_next(sides[0]), Gb = sides[1], Ga = p.corner_next(sides[1]);
       Index* c = t.corner_edge_.data() + 4 * e;  // [V(a), F(G), V(b), F(F)]
-      c[0] = spoke(G, a), c[1] = spoke(G, b), c[2] = spoke(F, b), c[3] = spoke(F, a);
+      c[0] = spoke_of[Ga], c[1] = spoke_of[Gb], c[2] = spoke_of[Fb], c[3] = spoke_of[Fa];
     }
   });
-  for (Index f = 0; f < nf; ++f)
-    for (Index c = p.face_first_corner(f); c < p.face_first_corner(f) + p.face_size(f); ++c)
-      t.edge_vertices_[static_cast<std::size_t>(c)] = {f, vertex_point + sorted[static_cast<std::size_t>(c)]};
-  // Sides in increasing corner order: each spoke has exactly two.
-  std::vector<std::uint8_t> filled(child_edges, 0);
-  for (std::size_t c = 0; c < child_corners; ++c) {
-    const auto edge = static_cast<std::size_t>(t.corner_edge_[c]);
-    if (filled[edge] >= 2) return std::nullopt;
-    t.edge_corners_[2 * edge + filled[edge]++] = static_cast<Index>(c);
-  }
-
   const Index child_vertices = nf + nv;
   detail::assign_large(t.vertex_corner_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
   detail::assign_large(t.vertex_edge_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
-  for (Index f = 0; f < nf; ++f) t.vertex_corner_offsets_[f + 1] = t.vertex_edge_offsets_[f + 1] = p.face_size(f);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 16384), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f)
+      t.vertex_corner_offsets_[f + 1] = t.vertex_edge_offsets_[f + 1] = p.face_size(f);
+  });
   for (Index v = 0; v < nv; ++v) {
     t.vertex_corner_offsets_[vertex_point + v + 1] = p.vertex_face_count(v);
     t.vertex_edge_offsets_[vertex_point + v + 1] = p.valence(v);
@@ -90,22 +94,35 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
     Index* out_c = t.vertex_corners_.data() + t.vertex_corner_offsets_[cv];
     Index* out_e = t.vertex_edges_.data() + t.vertex_edge_offsets_[cv];
     for (Index k = 0; k < n; ++k) {
-      out_c[k] = ring_corners[(start + k) % n];
-      out_e[k] = ring_edges[(start + k) % n];
+      const Index at = static_cast<Index>(start) + k < n ? static_cast<Index>(start) + k : static_cast<Index>(start) + k - n;
+      out_c[k] = ring_corners[at];
+      out_e[k] = ring_edges[at];
     }
   };
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     std::vector<Index> ring_corners, ring_edges;
+    std::vector<char> first_side;  // f is e_i's F, v_i its a
     for (Index f = range.begin(); f != range.end(); ++f) {
       // Around F(f): the child face of edge e_i (v_i -> v_{i+1} in f) leaves
       // along the spoke to v_i and enters along the one to v_{i+1}.
       const Index n = p.face_size(f), first = p.face_first_corner(f);
       ring_corners.resize(static_cast<std::size_t>(n));
       ring_edges.resize(static_cast<std::size_t>(n));
+      first_side.resize(static_cast<std::size_t>(n));
+      for (Index i = 0; i < n; ++i)
+        first_side[static_cast<std::size_t>(i)] = p.edge_corners(p.corner_edge_[first + i])[0] == first + i;
       for (Index i = 0; i < n; ++i) {
-        const Index c = first + i, e = p.corner_edge_[c];
-        ring_corners[static_cast<std::size_t>(i)] = 4 * e + (p.edge_corners(e)[0] == c ? 3 : 1);
-        ring_edges[static_cast<std::size_t>(i)] = spoke(f, p.corner_vertex_[c]);
+        const Index c = first + i, prev = i == 0 ? n - 1 : i - 1;
+        ring_corners[static_cast<std::size_t>(i)] = 4 * p.corner_edge_[c] + (first_side[static_cast<std::size_t>(i)] ? 3 : 1);
+        ring_edges[static_cast<std::size_t>(i)] = spoke_of[static_cast<std::size_t>(c)];
+        // The spoke to v_i: its sides are this ring corner and, in the child
+        // face of e_prev (entering v_i), V(b) if f is e_prev's F, else V(a).
+        const Index here = ring_corners[static_cast<std::size_t>(i)];
+        const Index other = 4 * p.corner_edge_[first + prev] + (first_side[static_cast<std::size_t>(prev)] ? 2 : 0);
+        const auto spoke = static_cast<std::size_t>(ring_edges[static_cast<std::size_t>(i)]);
+        t.edge_vertices_[spoke] = {f, vertex_point + p.corner_vertex_[c]};
+        t.edge_corners_[2 * spoke] = std::min(here, other);
+        t.edge_corners_[2 * spoke + 1] = std::max(here, other);
       }
       write_ring(f, ring_corners.data(), ring_edges.data(), n);
     }
@@ -129,8 +146,9 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
       ring_edges.resize(static_cast<std::size_t>(k));
       for (Index j = 0; j < k; ++j) {
         const Index e = edges[static_cast<std::size_t>(j)];
-        ring_corners[static_cast<std::size_t>(j)] = 4 * e + (p.corner_vertex_[p.edge_corners(e)[0]] == v ? 0 : 2);
-        ring_edges[static_cast<std::size_t>(j)] = spoke(face_of(faces[static_cast<std::size_t>((j + k - 1) % k)]), v);
+        // Corner j leaves v along e_j: V(a) if it is e_j's first side, else V(b).
+        ring_corners[static_cast<std::size_t>(j)] = 4 * e + (p.edge_corners(e)[0] == faces[static_cast<std::size_t>(j)] ? 0 : 2);
+        ring_edges[static_cast<std::size_t>(j)] = spoke_of[static_cast<std::size_t>(faces[static_cast<std::size_t>(j == 0 ? k - 1 : j - 1)])];
       }
       write_ring(cv, ring_corners.data(), ring_edges.data(), k);
     }

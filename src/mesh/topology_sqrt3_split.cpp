@@ -7,9 +7,15 @@
 // smaller end: face point f's edges are the flipped edges (F(f), F(g)) to
 // its neighbours g > f, in increasing g, then its spokes (F(f), V(v)) to its
 // corners, in increasing v: the generic (min, max) order.
+//
+// Every array is written by parallel loops over parent faces, edges or
+// vertices, each element by one iteration: the child edges are numbered
+// first (per face, then a prefix sum), and each parent corner and edge
+// remembers its child edge (its spoke, its flipped edge) for the later loops.
 
 #include <algorithm>
-#include <array>
+#include <atomic>
+#include <numeric>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -19,50 +25,76 @@
 
 namespace subdiv {
 
+namespace {
+
+// The rank of x among the n values a[0..n) (how many are smaller).
+inline Index rank_among(const Index* a, Index n, Index x) {
+  Index r = 0;
+  for (Index i = 0; i < n; ++i) r += a[i] < x;
+  return r;
+}
+
+}  // namespace
+
 std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p, const PolygonMesh& child) {
   if (!p.all_rings_ordered()) return std::nullopt;
   const Index nf = p.face_count(), ne = p.edge_count(), nv = p.vertex_count();
   if (child.vertex_count() != nf + nv || child.face_count() != 2 * ne) return std::nullopt;  // a trisecting step
-  for (Index f = 0; f < nf; ++f)
-    if (p.face_size(f) != 3) return std::nullopt;
-  for (Index e = 0; e < ne; ++e)
-    if (p.edge_face_count(e) != 2) return std::nullopt;  // closed manifold meshes only
+  if (p.uniform_face_size_ != 3) return std::nullopt;  // triangles only
   const Index vertex_point = nf;
-  auto face_of = [&](Index corner) { return corner / 3; };
+  auto face_of = [](Index corner) { return corner / 3; };
+  auto next_of = [](Index corner) { return corner % 3 == 2 ? corner - 2 : corner + 1; };
 
-  // Per face: its neighbours g > f (sorted) and its corners' vertices (sorted).
-  // Two faces sharing two edges would merge flipped edges: generic build.
-  std::vector<std::array<Index, 3>> partners(static_cast<std::size_t>(nf)), corners(static_cast<std::size_t>(nf));
+  // Closed manifold meshes only (ordered rings: consistently oriented); a
+  // face next to itself, two faces sharing two edges (merged flipped edges)
+  // or a repeated corner vertex go to the generic build. Per face: its
+  // neighbours across its three edges, and its number of child edges
+  // (partners g > f, then three spokes).
+  std::vector<Index> neighbour(3 * static_cast<std::size_t>(nf));
   std::vector<Index> first(static_cast<std::size_t>(nf) + 1, 0);
-  std::vector<Index> partner_count(static_cast<std::size_t>(nf), 0);
-  bool simple = true;
-  for (Index f = 0; f < nf && simple; ++f) {
-    Index n = 0;
-    for (Index i = 0; i < 3; ++i) {
-      const auto sides = p.edge_corners(p.corner_edge_[3 * f + i]);
-      const Index g = face_of(sides[0]) == f ? face_of(sides[1]) : face_of(sides[0]);
-      if (g == f) simple = false;
-      if (g > f) partners[f][n++] = g;
-      corners[f][i] = p.corner_vertex_[3 * f + i];
+  std::atomic<bool> simple = true;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f) {
+      Index n = 0;
+      const Index* v = p.corner_vertex_.data() + 3 * f;
+      if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2]) simple = false;
+      Index* g = neighbour.data() + 3 * f;
+      for (Index i = 0; i < 3; ++i) {
+        const Index e = p.corner_edge_[3 * f + i];
+        if (p.edge_face_count(e) != 2) {
+          simple = false;
+          g[i] = f;
+          continue;
+        }
+        const auto sides = p.edge_corners(e);
+        g[i] = face_of(sides[0] == 3 * f + i ? sides[1] : sides[0]);
+        if (g[i] == f) simple = false;
+        n += g[i] > f;
+      }
+      if (g[0] == g[1] || g[1] == g[2] || g[0] == g[2]) simple = false;
+      first[static_cast<std::size_t>(f) + 1] = n + 3;
     }
-    std::sort(partners[f].begin(), partners[f].begin() + n);
-    std::sort(corners[f].begin(), corners[f].end());
-    if (std::adjacent_find(partners[f].begin(), partners[f].begin() + n) != partners[f].begin() + n) simple = false;
-    if (std::adjacent_find(corners[f].begin(), corners[f].end()) != corners[f].end()) simple = false;
-    partner_count[f] = n;
-    first[f + 1] = first[f] + n + 3;
-  }
+  });
   if (!simple) return std::nullopt;
+  std::partial_sum(first.begin(), first.end(), first.begin());
   const Index child_edges = first.back();
-  auto flipped = [&](Index f, Index g) {
-    const Index lo = std::min(f, g), hi = std::max(f, g);
-    const Index* begin = partners[lo].data();
-    return first[lo] + static_cast<Index>(std::lower_bound(begin, begin + partner_count[lo], hi) - begin);
-  };
-  auto spoke = [&](Index f, Index v) {
-    const Index* begin = corners[f].data();
-    return first[f] + partner_count[f] + static_cast<Index>(std::lower_bound(begin, begin + 3, v) - begin);
-  };
+
+  // The child edge of each parent corner (its face's spoke to its vertex)
+  // and of each parent edge (the flipped edge, numbered at its smaller face).
+  std::vector<Index> spoke_of(3 * static_cast<std::size_t>(nf)), flipped_of(static_cast<std::size_t>(ne));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f) {
+      const Index* v = p.corner_vertex_.data() + 3 * f;
+      const Index* g = neighbour.data() + 3 * f;
+      Index larger[3], n = 0;
+      for (Index i = 0; i < 3; ++i)
+        if (g[i] > f) larger[n++] = g[i];
+      for (Index i = 0; i < 3; ++i) {
+        spoke_of[3 * static_cast<std::size_t>(f) + i] = first[f] + n + rank_among(v, 3, v[i]);
+        if (g[i] > f) flipped_of[static_cast<std::size_t>(p.corner_edge_[3 * f + i])] = first[f] + rank_among(larger, n, g[i]);
+      }
+    }
+  });
 
   MeshTopology t;
   t.face_offsets_ = child.face_offsets;
@@ -72,44 +104,44 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
   detail::assign_large(t.corner_edge_, child_corners);
   detail::assign_large(t.edge_vertices_, static_cast<std::size_t>(child_edges));
   detail::assign_large(t.edge_corner_offsets_, static_cast<std::size_t>(child_edges) + 1);
-  for (Index e = 0; e <= child_edges; ++e) t.edge_corner_offsets_[static_cast<std::size_t>(e)] = 2 * e;  // all interior
   detail::assign_large(t.edge_corners_, 2 * static_cast<std::size_t>(child_edges));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, child_edges + 1, 16384), [&](const tbb::blocked_range<Index>& range) {
+    for (Index e = range.begin(); e != range.end(); ++e) t.edge_corner_offsets_[static_cast<std::size_t>(e)] = 2 * e;  // all interior
+  });
 
+  // Per parent edge: its two child faces' corner edges, and its flipped
+  // edge, whose sides are corner 1 of the first child face and corner 1 of
+  // the second.
   tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 4096), [&](const tbb::blocked_range<Index>& range) {
     for (Index e = range.begin(); e != range.end(); ++e) {
       const auto sides = p.edge_corners(e);
       const Index F = face_of(sides[0]), G = face_of(sides[1]);
-      const Index a = p.corner_vertex_[sides[0]], b = p.corner_vertex_[p.corner_next(sides[0])];
+      // F's side runs a -> b, G's b -> a.
+      const Index Fa = sides[0], Fb = next_of(sides[0]), Gb = sides[1], Ga = next_of(sides[1]);
+      const Index flipped = flipped_of[static_cast<std::size_t>(e)];
       Index* c = t.corner_edge_.data() + 6 * e;
-      c[0] = spoke(G, a), c[1] = flipped(F, G), c[2] = spoke(F, a);  // [V(a), F(G), F(F)]
-      c[3] = spoke(F, b), c[4] = c[1], c[5] = spoke(G, b);           // [V(b), F(F), F(G)]
-      t.edge_vertices_[static_cast<std::size_t>(c[1])] = {std::min(F, G), std::max(F, G)};
+      c[0] = spoke_of[Ga], c[1] = flipped, c[2] = spoke_of[Fa];  // [V(a), F(G), F(F)]
+      c[3] = spoke_of[Fb], c[4] = flipped, c[5] = spoke_of[Gb];  // [V(b), F(F), F(G)]
+      t.edge_vertices_[static_cast<std::size_t>(flipped)] = {std::min(F, G), std::max(F, G)};
+      t.edge_corners_[2 * static_cast<std::size_t>(flipped)] = 6 * e + 1;
+      t.edge_corners_[2 * static_cast<std::size_t>(flipped) + 1] = 6 * e + 4;
     }
   });
-  for (Index f = 0; f < nf; ++f)
-    for (const Index v : corners[f]) t.edge_vertices_[static_cast<std::size_t>(spoke(f, v))] = {f, vertex_point + v};
-  // Sides in increasing corner order: each edge has exactly two.
-  std::vector<std::uint8_t> filled(static_cast<std::size_t>(child_edges), 0);
-  for (std::size_t c = 0; c < child_corners; ++c) {
-    const auto edge = static_cast<std::size_t>(t.corner_edge_[c]);
-    if (filled[edge] >= 2) return std::nullopt;
-    t.edge_corners_[2 * edge + filled[edge]++] = static_cast<Index>(c);
-  }
 
   // Vertex incidence: a face point has 6 corners and edges, a vertex point
   // its parent's valence.
   const Index child_vertices = nf + nv;
   detail::assign_large(t.vertex_corner_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
   detail::assign_large(t.vertex_edge_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
-  for (Index f = 0; f < nf; ++f) t.vertex_corner_offsets_[f + 1] = t.vertex_edge_offsets_[f + 1] = 6;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 16384), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f) t.vertex_corner_offsets_[f + 1] = t.vertex_edge_offsets_[f + 1] = 6;
+  });
   for (Index v = 0; v < nv; ++v) {
     t.vertex_corner_offsets_[vertex_point + v + 1] = p.vertex_face_count(v);
     t.vertex_edge_offsets_[vertex_point + v + 1] = p.valence(v);
   }
   t.lay_out_vertex_incidence();
 
-  // The child corner at V(v) and at F(f) in the child faces of parent edge e.
-  auto corner_at_vertex = [&](Index e, Index v) { return 6 * e + (p.corner_vertex_[p.edge_corners(e)[0]] == v ? 0 : 3); };
   // Face j of a ring leaves its vertex along edge j and enters along j + 1;
   // rings start at their smallest corner (the generic walk's order).
   auto write_ring = [&](Index cv, const Index* ring_corners, const Index* ring_edges, Index n) {
@@ -117,24 +149,34 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
     Index* out_c = t.vertex_corners_.data() + t.vertex_corner_offsets_[cv];
     Index* out_e = t.vertex_edges_.data() + t.vertex_edge_offsets_[cv];
     for (Index k = 0; k < n; ++k) {
-      out_c[k] = ring_corners[(start + k) % n];
-      out_e[k] = ring_edges[(start + k) % n];
+      const Index at = static_cast<Index>(start) + k < n ? static_cast<Index>(start) + k : static_cast<Index>(start) + k - n;
+      out_c[k] = ring_corners[at];
+      out_e[k] = ring_edges[at];
     }
   };
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     for (Index f = range.begin(); f != range.end(); ++f) {
       // Around F(f): at v_i from e_i (leaving along the spoke to v_i), then at
       // v_{i+1} from e_i (leaving along e_i's flipped edge).
-      Index ring_corners[6], ring_edges[6];
+      Index ring_corners[6], ring_edges[6], e[3];
+      bool first_side[3];  // f is e_i's F, v_i its a
       for (Index i = 0; i < 3; ++i) {
-        const Index c = 3 * f + i, e = p.corner_edge_[c];
-        const Index v = p.corner_vertex_[c], next = p.corner_vertex_[p.corner_next(c)];
-        const auto sides = p.edge_corners(e);
-        const Index g = face_of(sides[0]) == f ? face_of(sides[1]) : face_of(sides[0]);
-        ring_corners[2 * i] = corner_at_vertex(e, v) + 2;
-        ring_corners[2 * i + 1] = corner_at_vertex(e, next) + 1;
-        ring_edges[2 * i] = spoke(f, v);
-        ring_edges[2 * i + 1] = flipped(f, g);
+        e[i] = p.corner_edge_[3 * f + i];
+        first_side[i] = p.edge_corners(e[i])[0] == 3 * f + i;
+      }
+      for (Index i = 0; i < 3; ++i) {
+        const Index c = 3 * f + i, prev = i == 0 ? 2 : i - 1;
+        ring_corners[2 * i] = 6 * e[i] + (first_side[i] ? 2 : 5);
+        ring_corners[2 * i + 1] = 6 * e[i] + (first_side[i] ? 4 : 1);
+        ring_edges[2 * i] = spoke_of[static_cast<std::size_t>(c)];
+        ring_edges[2 * i + 1] = flipped_of[static_cast<std::size_t>(e[i])];
+        // The spoke to v_i: its sides are in the child faces of e_i (leaving
+        // v_i) and of e_prev (entering it: at V(b) if f is e_prev's F).
+        const Index here = ring_corners[2 * i], other = 6 * e[prev] + (first_side[prev] ? 3 : 0);
+        const auto spoke = static_cast<std::size_t>(ring_edges[2 * i]);
+        t.edge_vertices_[spoke] = {f, vertex_point + p.corner_vertex_[c]};
+        t.edge_corners_[2 * spoke] = std::min(here, other);
+        t.edge_corners_[2 * spoke + 1] = std::max(here, other);
       }
       write_ring(f, ring_corners, ring_edges, 6);
     }
@@ -157,8 +199,11 @@ std::optional<MeshTopology> MeshTopology::from_sqrt3_split(const MeshTopology& p
       ring_corners.resize(static_cast<std::size_t>(k));
       ring_edges.resize(static_cast<std::size_t>(k));
       for (Index j = 0; j < k; ++j) {
-        ring_corners[static_cast<std::size_t>(j)] = corner_at_vertex(edges[static_cast<std::size_t>(j)], v);
-        ring_edges[static_cast<std::size_t>(j)] = spoke(face_of(faces[static_cast<std::size_t>((j + k - 1) % k)]), v);
+        // Corner j leaves v along e_j: the first child face's V corner if it
+        // is e_j's first side (running from a), else the second's.
+        const Index e = edges[static_cast<std::size_t>(j)];
+        ring_corners[static_cast<std::size_t>(j)] = 6 * e + (p.edge_corners(e)[0] == faces[static_cast<std::size_t>(j)] ? 0 : 3);
+        ring_edges[static_cast<std::size_t>(j)] = spoke_of[static_cast<std::size_t>(faces[static_cast<std::size_t>(j == 0 ? k - 1 : j - 1)])];
       }
       write_ring(cv, ring_corners.data(), ring_edges.data(), k);
     }

@@ -149,9 +149,13 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
     if (e != kInvalidIndex) out.edge_sharpness[static_cast<std::size_t>(e)] = std::max(out.edge_sharpness[static_cast<std::size_t>(e)], c.sharpness);
   }
   std::atomic<bool> any_sharp = !mesh.tags.creases.empty();
+  // A flipped edge leaves the ring of the vertex its sides both run to
+  // unordered (the walk finds a neighbour running the same way): with every
+  // ring ordered there is none to look for.
+  const bool may_have_flipped = !topo.all_rings_ordered();
   tbb::parallel_for(tbb::blocked_range<Index>(0, topo.edge_count(), 8192), [&](const tbb::blocked_range<Index>& r) {
     for (Index e = r.begin(); e != r.end(); ++e)
-      if (topo.edge_face_count(e) != 2 || topo.is_flipped_edge(e)) {
+      if (topo.edge_face_count(e) != 2 || (may_have_flipped && topo.is_flipped_edge(e))) {
         out.edge_sharpness[static_cast<std::size_t>(e)] = kInfiniteSharpness;
         any_sharp = true;
       }

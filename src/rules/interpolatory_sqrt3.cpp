@@ -30,8 +30,10 @@
 
 #include "subdiv/rules/interpolatory_sqrt3.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "rule_helpers.h"
 
@@ -51,6 +53,20 @@ std::vector<double> interpolatory_sqrt3_weights(int k) {
 }
 
 namespace {
+
+// The weights of valence k, tabulated for the usual valences (a vector and
+// 2k cosines per face point otherwise); the table holds the formula's own
+// values. Valences past it are computed into `scratch`.
+std::span<const double> extraordinary_weights(int k, std::vector<double>& scratch) {
+  static const auto table = [] {
+    std::array<std::vector<double>, 64> t;
+    for (int j = 3; j < static_cast<int>(t.size()); ++j) t[static_cast<std::size_t>(j)] = interpolatory_sqrt3_weights(j);
+    return t;
+  }();
+  if (k >= 3 && k < static_cast<int>(table.size())) return table[static_cast<std::size_t>(k)];
+  scratch = interpolatory_sqrt3_weights(k);
+  return scratch;
+}
 
 // The apex of the face across corner c's edge, or kInvalidIndex.
 Index apex_across(const MeshTopology& t, Index c) {
@@ -91,7 +107,8 @@ void add_extraordinary_rule(const MeshTopology& t, Index c, double w, MaskBuilde
   int j = 0;
   while (corners[static_cast<std::size_t>(j)] != c) ++j;
   // Face j leaves v along e_j and enters along e_{j+1}: u_0 = other(e_{j+1}).
-  const std::vector<double> weights = interpolatory_sqrt3_weights(k);
+  std::vector<double> scratch;
+  const std::span<const double> weights = extraordinary_weights(k, scratch);
   for (int i = 0; i < k; ++i)
     mask.add(t.other_vertex(edges[static_cast<std::size_t>((j + 1 + i) % k)], v), w * weights[static_cast<std::size_t>(i)]);
   mask.add(v, w * weights[static_cast<std::size_t>(k)]);

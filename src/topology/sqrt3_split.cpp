@@ -29,6 +29,8 @@
 // order, two for an interior edge (at the end its side runs from, then the
 // other), one for a boundary edge. Every face keeps the parent's orientation.
 
+#include <atomic>
+
 #include <tbb/parallel_for.h>
 
 #include "../core/large_buffers.h"
@@ -43,24 +45,54 @@ bool sqrt3_step_trisects(int level) { return level % 2 == 1; }
 
 namespace subdiv::detail {
 
+namespace {
+
+// Whether topo has a boundary edge, checking (in parallel) that it is a
+// manifold triangle mesh; the error names the first face or edge that is not.
+bool checked_has_boundary(const MeshTopology& topo) {
+  const Index nf = topo.face_count(), ne = topo.edge_count();
+  std::atomic<bool> all_triangles = true, manifold = true, boundary = false;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 16384), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f)
+      if (topo.face_size(f) != 3) all_triangles = false;
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, ne, 16384), [&](const tbb::blocked_range<Index>& range) {
+    for (Index e = range.begin(); e != range.end(); ++e) {
+      const auto n = topo.edge_corners(e).size();
+      if (n > 2) manifold = false;
+      if (n == 1) boundary = true;
+    }
+  });
+  if (!all_triangles)
+    for (Index f = 0; f < nf; ++f)
+      if (topo.face_size(f) != 3)
+        throw TopologyError("the sqrt3 split needs a triangle mesh, but face " + std::to_string(f) + " has " +
+                            std::to_string(topo.face_size(f)) + " vertices (triangulate it first)");
+  if (!manifold)
+    for (Index e = 0; e < ne; ++e)
+      if (topo.edge_corners(e).size() > 2)
+        throw TopologyError("the sqrt3 split needs a manifold mesh, but edge " + std::to_string(e) + " has " +
+                            std::to_string(topo.edge_corners(e).size()) + " faces");
+  return boundary;
+}
+
+}  // namespace
+
 SplitMap sqrt3_split(const MeshTopology& topo, PolygonMesh& child, int level) {
   const Index nf = topo.face_count(), ne = topo.edge_count(), nv = topo.vertex_count();
-  for (Index f = 0; f < nf; ++f)
-    if (topo.face_size(f) != 3)
-      throw TopologyError("the sqrt3 split needs a triangle mesh, but face " + std::to_string(f) + " has " +
-                          std::to_string(topo.face_size(f)) + " vertices (triangulate it first)");
-  for (Index e = 0; e < ne; ++e)
-    if (topo.edge_corners(e).size() > 2)
-      throw TopologyError("the sqrt3 split needs a manifold mesh, but edge " + std::to_string(e) + " has " +
-                          std::to_string(topo.edge_corners(e).size()) + " faces");
+  const bool open = checked_has_boundary(topo);
   const bool trisect = sqrt3_step_trisects(level);
   SplitMap map;
   map.rule = SplitRule::sqrt3;
 
   // Boundary faces (even steps) have no face point; the others are numbered.
-  std::vector<Index> point_of(static_cast<std::size_t>(nf), kInvalidIndex);
-  std::vector<Index> boundary_edge_of(static_cast<std::size_t>(nf), kInvalidIndex);
-  if (trisect) {
+  // Without a boundary every face has one, numbered as the faces.
+  std::vector<Index> point_of, boundary_edge_of;
+  if (open) {
+    point_of.assign(static_cast<std::size_t>(nf), kInvalidIndex);
+    boundary_edge_of.assign(static_cast<std::size_t>(nf), kInvalidIndex);
+  }
+  if (trisect && open) {
     for (Index e = 0; e < ne; ++e) {
       if (!topo.is_boundary_edge(e)) continue;
       const Index f = topo.corner_face(topo.edge_corners(e)[0]);
@@ -70,20 +102,25 @@ SplitMap sqrt3_split(const MeshTopology& topo, PolygonMesh& child, int level) {
       boundary_edge_of[static_cast<std::size_t>(f)] = e;
     }
   }
-  for (Index f = 0; f < nf; ++f)
-    if (boundary_edge_of[static_cast<std::size_t>(f)] == kInvalidIndex) {
-      point_of[static_cast<std::size_t>(f)] = static_cast<Index>(map.point_faces.size());
-      map.point_faces.push_back(f);
-    }
-  const auto face_points = static_cast<Index>(map.point_faces.size());
-  if (face_points == nf) map.point_faces.clear();  // all of them
-  std::vector<Index> boundary_rank(static_cast<std::size_t>(ne), kInvalidIndex);
-  if (trisect)
+  Index face_points = nf;
+  if (open) {
+    for (Index f = 0; f < nf; ++f)
+      if (boundary_edge_of[static_cast<std::size_t>(f)] == kInvalidIndex) {
+        point_of[static_cast<std::size_t>(f)] = static_cast<Index>(map.point_faces.size());
+        map.point_faces.push_back(f);
+      }
+    face_points = static_cast<Index>(map.point_faces.size());
+    if (face_points == nf) map.point_faces.clear();  // all of them
+  }
+  std::vector<Index> boundary_rank;
+  if (trisect && open) {
+    boundary_rank.assign(static_cast<std::size_t>(ne), kInvalidIndex);
     for (Index e = 0; e < ne; ++e)
       if (topo.is_boundary_edge(e)) {
         boundary_rank[static_cast<std::size_t>(e)] = static_cast<Index>(map.boundary_edges.size());
         map.boundary_edges.push_back(e);
       }
+  }
   map.face_points = 0;
   map.edge_points = face_points;  // the boundary points
   map.vertex_points = face_points + 2 * static_cast<Index>(map.boundary_edges.size());
@@ -91,11 +128,12 @@ SplitMap sqrt3_split(const MeshTopology& topo, PolygonMesh& child, int level) {
   auto boundary_point = [&](Index e, Index v) {
     return map.edge_points + 2 * boundary_rank[static_cast<std::size_t>(e)] + (topo.edge_vertices(e)[0] == v ? 0 : 1);
   };
+  auto point_of_face = [&](Index f) { return open ? point_of[static_cast<std::size_t>(f)] : f; };
   // What face f contributes to its interior edge e in place of the edge:
   // its face point, or (a boundary face) the boundary point near e's end on
   // its boundary edge.
   auto point_for = [&](Index f, Index e) {
-    const Index p = point_of[static_cast<std::size_t>(f)];
+    const Index p = point_of_face(f);
     if (p != kInvalidIndex) return map.face_points + p;
     const Index b = boundary_edge_of[static_cast<std::size_t>(f)];
     const auto [b0, b1] = topo.edge_vertices(b);
@@ -103,11 +141,16 @@ SplitMap sqrt3_split(const MeshTopology& topo, PolygonMesh& child, int level) {
     return boundary_point(b, e0 == b0 || e0 == b1 ? e0 : e1);
   };
 
-  // Child faces per edge: offsets first, so that edges fill in parallel.
-  std::vector<Index> first_face(static_cast<std::size_t>(ne) + 1, 0);
-  for (Index e = 0; e < ne; ++e)
-    first_face[static_cast<std::size_t>(e) + 1] = first_face[static_cast<std::size_t>(e)] + (topo.is_boundary_edge(e) ? 1 : 2);
-  const auto child_faces = static_cast<std::size_t>(first_face.back());
+  // Child faces per edge, two per interior edge: offsets first (open meshes),
+  // so that edges fill in parallel.
+  std::vector<Index> first_face;
+  if (open) {
+    first_face.assign(static_cast<std::size_t>(ne) + 1, 0);
+    for (Index e = 0; e < ne; ++e)
+      first_face[static_cast<std::size_t>(e) + 1] = first_face[static_cast<std::size_t>(e)] + (topo.is_boundary_edge(e) ? 1 : 2);
+  }
+  auto first_face_of = [&](Index e) { return open ? first_face[static_cast<std::size_t>(e)] : 2 * e; };
+  const auto child_faces = static_cast<std::size_t>(first_face_of(ne));
   detail::assign_large(child.positions, static_cast<std::size_t>(map.child_vertex_count), Vec3{});
   detail::assign_large(child.face_offsets, child_faces + 1);
   detail::assign_large(child.face_indices, 3 * child_faces);
@@ -117,14 +160,14 @@ SplitMap sqrt3_split(const MeshTopology& topo, PolygonMesh& child, int level) {
       const Index cf = sides[0], f = topo.corner_face(cf);
       // Side cf runs a -> b in face f.
       const Index a = topo.corner_vertex(cf), b = topo.corner_vertex(topo.corner_next(cf));
-      const auto out = static_cast<std::size_t>(first_face[static_cast<std::size_t>(e)]);
+      const auto out = static_cast<std::size_t>(first_face_of(e));
       Index* t = child.face_indices.data() + 3 * out;
       if (sides.size() == 1) {
         if (trisect) {
           const Index apex = topo.corner_vertex(topo.corner_prev(cf));
           t[0] = boundary_point(e, a), t[1] = boundary_point(e, b), t[2] = map.vertex_point(apex);
         } else {
-          t[0] = map.vertex_point(a), t[1] = map.vertex_point(b), t[2] = map.face_points + point_of[static_cast<std::size_t>(f)];
+          t[0] = map.vertex_point(a), t[1] = map.vertex_point(b), t[2] = map.face_points + point_of_face(f);
         }
       } else {
         const Index g = topo.corner_face(sides[1]);

@@ -1,5 +1,8 @@
 #include "subdiv/topology/split.h"
 
+#include <cmath>
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "subdiv/core/error.h"
@@ -206,6 +209,30 @@ TEST(TriangleSplit, DerivedTopologyEqualsTheGenericOne) {
   EXPECT_FALSE(MeshTopology::from_triangle_split(t, child).has_value());
 }
 
+// A closed m x n quad torus (or each quad split into two triangles), big
+// enough that the derived topologies' parallel loops run in several blocks.
+PolygonMesh torus_mesh(int m, int n, bool triangles) {
+  std::vector<Vec3> p;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < m; ++i) {
+      const double u = 2.0 * std::numbers::pi * i / m, v = 2.0 * std::numbers::pi * j / n;
+      p.push_back({(3.0 + std::cos(v)) * std::cos(u), (3.0 + std::cos(v)) * std::sin(u), std::sin(v)});
+    }
+  const auto at = [m, n](int i, int j) { return static_cast<Index>((i % m) + m * (j % n)); };
+  std::vector<std::vector<Index>> faces;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < m; ++i) {
+      const Index a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if (triangles) {
+        faces.push_back({a, b, c});
+        faces.push_back({a, c, d});
+      } else {
+        faces.push_back({a, b, c, d});
+      }
+    }
+  return make_mesh(std::move(p), faces);
+}
+
 // The sqrt3 split's derived topology equals the one built from the child's
 // faces, level after level, on closed meshes; open meshes (whose trisecting
 // steps it does not cover) get none.
@@ -213,6 +240,7 @@ TEST(DerivedTopology, Sqrt3SplitMatchesTheGenericBuild) {
   std::vector<std::pair<std::string, PolygonMesh>> cases;
   cases.emplace_back("tetrahedron", test::tetrahedron());
   cases.emplace_back("cube", triangulate(test::cube()));
+  cases.emplace_back("torus", torus_mesh(48, 32, true));
   PolygonMesh with_isolated = test::tetrahedron();
   with_isolated.positions.push_back({9, 9, 9});
   cases.emplace_back("isolated vertex", with_isolated);
@@ -242,6 +270,7 @@ TEST(DerivedTopology, Sqrt2SplitMatchesTheGenericBuild) {
   std::vector<std::pair<std::string, PolygonMesh>> cases;
   cases.emplace_back("cube", test::cube());
   cases.emplace_back("tetrahedron", test::tetrahedron());
+  cases.emplace_back("torus", torus_mesh(48, 32, false));
   PolygonMesh with_isolated = test::cube();
   with_isolated.positions.push_back({9, 9, 9});
   cases.emplace_back("isolated vertex", with_isolated);
