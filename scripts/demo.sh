@@ -37,6 +37,8 @@ done
 # Kobbelt's interpolatory scheme reads quads: the cube, and the L (open, with corners).
 "$subdiv" refine data/meshes/cube.obj -s kobbelt -l 4 -o out/cube_kobbelt4.obj
 "$subdiv" refine data/meshes/l_shape.obj -s kobbelt -l 4 -o out/l_shape_kobbelt4.obj
+# Interpolatory sqrt3 on the open L: ternary four-point boundaries.
+"$subdiv" refine data/meshes/l_shape.obj -s interpolatory-sqrt3 --triangulate -l 4 -o out/l_shape_interpolatory-sqrt34.obj
 for scheme in loop catmull-clark butterfly modified-butterfly doo-sabin; do
   echo "== subdiv analyze -s $scheme -k 3..8"
   "$subdiv" analyze -s "$scheme" -k 3..8 --plot-spectrum "out/${scheme}_spectrum.svg" \

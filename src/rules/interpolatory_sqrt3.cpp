@@ -20,13 +20,22 @@
 // away from the face, so that the face lies between u_{k-1} and u_0 and the
 // cosines are taken from the face's direction (angle pi/k off u_0).
 //
-// Closed meshes only (Scheme::needs_closed_mesh): the paper's boundary
-// rules are not implemented. Its trisecting boundary rule is the ternary
-// four-point rule, but the rules for boundary triangles on the other steps
-// appear in OpenMesh in alternative variants whose published form could not
-// be checked. (In the analysis' ring meshes, whose outer boundary lies
-// outside the neighbourhood read, faces without the rule's neighbours take
-// their centroid and boundary points their edge's thirds.)
+// Boundaries (open meshes, corner tags). On the trisecting steps a boundary
+// edge (v, w) gets the ternary four-point rule, the cubic through v's and
+// w's boundary neighbours at a third of the way:
+//   near v  20/27 v + 10/27 w - 5/81 (beyond v) - 4/81 (beyond w),
+// as in OpenMesh's implementation (its compute_new_boundary_points); where
+// the curve ends (a corner) the point beyond is the linear extrapolation
+// 2v - w. On the other steps the paper's rules for triangles at the
+// boundary appear in OpenMesh in three variants (#ifdef'd) whose published
+// form could not be checked, so this project derives its own: the 12-point
+// rule with the points of its stencil beyond the boundary continued
+// linearly, the apex across edge (p, q) of triangle (p, q, r) taken as
+// p + q - r (exact on the regular grid; linear precision). On a regular
+// boundary that is 1/3, 1/3 on the boundary edge, 37/81 on the apex,
+// -1/81 and -2/81 beyond (tested); the analysis finds boundary sectors of
+// 1..5 faces C1. Boundary vertices count as regular (the extraordinary
+// rules are for interior vertices).
 
 #include "subdiv/rules/interpolatory_sqrt3.h"
 
@@ -114,6 +123,81 @@ void add_extraordinary_rule(const MeshTopology& t, Index c, double w, MaskBuilde
   mask.add(v, w * weights[static_cast<std::size_t>(k)]);
 }
 
+// A point of the 12-point rule's stencil: a vertex, or where the stencil
+// leaves the mesh a ghost, a short combination of vertices.
+struct StencilPoint {
+  std::array<Index, 6> vertices{};
+  std::array<double, 6> weights{};
+  int size = 0;
+};
+
+StencilPoint vertex_point_of(Index v) {
+  StencilPoint p;
+  p.vertices[0] = v;
+  p.weights[0] = 1.0;
+  p.size = 1;
+  return p;
+}
+
+// p + q - r: the apex across edge (p, q) of the triangle (p, q, r) on the
+// regular grid, the mesh continued linearly past its boundary.
+StencilPoint ghost_apex(const StencilPoint& p, const StencilPoint& q, const StencilPoint& r) {
+  StencilPoint g;
+  auto add = [&](const StencilPoint& x, double sign) {
+    for (int i = 0; i < x.size; ++i) {
+      int j = 0;
+      while (j < g.size && g.vertices[static_cast<std::size_t>(j)] != x.vertices[static_cast<std::size_t>(i)]) ++j;
+      if (j == g.size) {
+        g.vertices[static_cast<std::size_t>(j)] = x.vertices[static_cast<std::size_t>(i)];
+        g.weights[static_cast<std::size_t>(j)] = 0.0;
+        ++g.size;
+      }
+      g.weights[static_cast<std::size_t>(j)] += sign * x.weights[static_cast<std::size_t>(i)];
+    }
+  };
+  add(p, 1.0);
+  add(q, 1.0);
+  add(r, -1.0);
+  return g;
+}
+
+void add_point(const StencilPoint& p, double w, MaskBuilder& mask) {
+  for (int i = 0; i < p.size; ++i)
+    mask.add(p.vertices[static_cast<std::size_t>(i)], w * p.weights[static_cast<std::size_t>(i)]);
+}
+
+// The 12-point rule next to a boundary: the stencil's points beyond the
+// boundary are ghosts (ghost_apex), so the rule keeps linear precision
+// there. Corner c_i of the face runs edge (v_i, v_i+1); N_i is the triangle
+// across it, with apex n_i, and the rule's outer points are the apices
+// across N_i's edges (v_i, n_i) and (n_i, v_i+1).
+void add_regular_rule_with_ghosts(const MeshTopology& t, Index f, MaskBuilder& mask) {
+  const Index first = t.face_first_corner(f);
+  std::array<StencilPoint, 3> v;
+  for (Index i = 0; i < 3; ++i) v[static_cast<std::size_t>(i)] = vertex_point_of(t.corner_vertex(first + i));
+  for (Index i = 0; i < 3; ++i) {
+    const StencilPoint& a = v[static_cast<std::size_t>(i)];
+    const StencilPoint& b = v[static_cast<std::size_t>((i + 1) % 3)];
+    const StencilPoint& c = v[static_cast<std::size_t>((i + 2) % 3)];
+    const Index o = t.corner_across(first + i);  // in N_i, running b -> a
+    const StencilPoint n = o == kInvalidIndex ? ghost_apex(a, b, c) : vertex_point_of(t.corner_vertex(t.corner_prev(o)));
+    // The apex across N_i's edge from corner `corner` (p, q), opposite r.
+    auto outer = [&](Index corner, const StencilPoint& p, const StencilPoint& q, const StencilPoint& r) {
+      const Index apex = apex_across(t, corner);
+      return apex == kInvalidIndex ? ghost_apex(p, q, r) : vertex_point_of(apex);
+    };
+    add_point(a, 32.0 / 81.0, mask);
+    add_point(n, -1.0 / 81.0, mask);
+    if (o == kInvalidIndex) {
+      add_point(ghost_apex(a, n, b), -2.0 / 81.0, mask);
+      add_point(ghost_apex(n, b, a), -2.0 / 81.0, mask);
+    } else {
+      add_point(outer(t.corner_next(o), a, n, b), -2.0 / 81.0, mask);
+      add_point(outer(t.corner_prev(o), n, b, a), -2.0 / 81.0, mask);
+    }
+  }
+}
+
 void face_point(const LevelView& level, Index f, MaskBuilder& mask) {
   const MeshTopology& t = level.topology;
   const Index first = t.face_first_corner(f);
@@ -121,7 +205,7 @@ void face_point(const LevelView& level, Index f, MaskBuilder& mask) {
   for (Index c = first; c < first + 3; ++c) irregular += !regular(t, t.corner_vertex(c));
   if (irregular == 0) {
     // add_regular_rule finds all its vertices before adding any.
-    if (!add_regular_rule(t, f, mask)) detail::add_face_average(level, f, 1.0, mask);  // the analysis ring's rim
+    if (!add_regular_rule(t, f, mask)) add_regular_rule_with_ghosts(t, f, mask);
     return;
   }
   for (Index c = first; c < first + 3; ++c)
@@ -130,9 +214,32 @@ void face_point(const LevelView& level, Index f, MaskBuilder& mask) {
 
 void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
 
+bool is_corner(const LevelView& level, Index v) {
+  return !level.vertex_rule.empty() && level.vertex_rule[static_cast<std::size_t>(v)] == VertexRule::corner;
+}
+
+// Adds s times the boundary vertex beyond v from w along the boundary, or
+// where the boundary curve ends at v (a corner) its linear extrapolation.
+void add_beyond_on_boundary(const LevelView& level, Index v, Index w, double s, MaskBuilder& mask) {
+  const auto [a, b] = detail::crease_neighbours(level, v);
+  const Index beyond = a == w ? b : a;
+  if (is_corner(level, v) || beyond == kInvalidIndex || beyond == w) {
+    mask.add(v, 2.0 * s);
+    mask.add(w, -s);
+    return;
+  }
+  mask.add(beyond, s);
+}
+
+// The trisection point near v on boundary edge (v, w): the ternary
+// four-point rule, the cubic through v's and w's boundary neighbours
+// evaluated a third of the way from v to w.
 void boundary_point(const LevelView& level, Index e, Index v, MaskBuilder& mask) {
-  mask.add(v, 2.0 / 3.0);
-  mask.add(level.topology.other_vertex(e, v), 1.0 / 3.0);
+  const Index w = level.topology.other_vertex(e, v);
+  mask.add(v, 20.0 / 27.0);
+  mask.add(w, 10.0 / 27.0);
+  add_beyond_on_boundary(level, v, w, -5.0 / 81.0, mask);
+  add_beyond_on_boundary(level, w, v, -4.0 / 81.0, mask);
 }
 
 }  // namespace
@@ -140,8 +247,8 @@ void boundary_point(const LevelView& level, Index e, Index v, MaskBuilder& mask)
 const Scheme& interpolatory_sqrt3_scheme() {
   static const Scheme scheme = [] {
     Scheme s{"interpolatory-sqrt3",
-             "interpolating, sqrt3 split (arity sqrt 3), closed triangle meshes; a 12-point rule, extraordinary "
-             "rules at valence != 6",
+             "interpolating, sqrt3 split (arity sqrt 3), triangles; a 12-point rule, extraordinary rules at "
+             "valence != 6, the ternary four-point rule on boundaries",
              "U. Labsik, G. Greiner: Interpolatory sqrt(3)-subdivision, Eurographics 2000 (weights as in OpenMesh's "
              "InterpolatingSqrt3LGT)",
              SplitRule::sqrt3,
@@ -151,7 +258,6 @@ const Scheme& interpolatory_sqrt3_scheme() {
              vertex_point};
     s.boundary_point = boundary_point;
     s.period = 2;
-    s.needs_closed_mesh = true;
     return s;
   }();
   return scheme;

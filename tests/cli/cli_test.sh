@@ -178,8 +178,10 @@ grep -qE "^interior k=6 +7 +1 +0.333333 +0.333333 +0.111111 .* C1 " "$work/out" 
 run analyze-sqrt3-boundary 0 analyze -s sqrt3 --boundary -k 3 && stdout_has analyze-sqrt3-boundary "0.333333  0.333333"
 run refine-isqrt3 0 refine "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 -l 2 -o "$work/is3.obj" --stats
 stdout_has refine-isqrt3 "level 2: 20 vertices, 36 faces"
-run refine-isqrt3-open 1 refine "$meshes/l_shape.obj" -s interpolatory-sqrt3 --triangulate -o "$work/x.obj" &&
-  stderr_one_line refine-isqrt3-open && stderr_has refine-isqrt3-open "needs a closed mesh"
+run refine-isqrt3-open 0 refine "$meshes/l_shape.obj" -s interpolatory-sqrt3 --triangulate -l 3 -o "$work/is3l.obj"
+run refine-isqrt3-open-info 0 info "$work/is3l.obj" && stdout_has refine-isqrt3-open-info "validation      ok"
+run analyze-isqrt3-boundary 0 analyze -s interpolatory-sqrt3 --boundary -k 1..5
+[ "$(grep -cE "^boundary k=[0-9]+ .* C1 " "$work/out")" = 5 ] && pass || fail "analyze interpolatory-sqrt3: boundary not C1"
 run analyze-isqrt3 0 analyze -s interpolatory-sqrt3 -k 3..8 --no-charmap &&
   grep -qE "^interior k=6 +37 +3 +0.333333 +0.333333 " "$work/out" && pass || fail "analyze interpolatory-sqrt3: k=6 row"
 run refine-four-eight 0 refine "$meshes/cube.obj" -s four-eight -l 2 -o "$work/48.obj" --stats

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <set>
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/core/error.h"
@@ -52,8 +53,7 @@ TEST(InterpolatorySqrt3, ExtraordinaryWeightsSumToOneAndAreSymmetric) {
 // face's vertices, -1/81 three times, -2/81 six times.
 TEST(InterpolatorySqrt3, RegularRuleGolden) {
   PolygonMesh grid = test::triangle_grid(6, 6);
-  Scheme open = interpolatory_sqrt3_scheme();
-  open.needs_closed_mesh = false;
+  const Scheme& open = interpolatory_sqrt3_scheme();
   const StencilTable table = refine_stencil_table(grid, open, levels(1));
   const MeshTopology t(grid);
   int checked = 0;
@@ -86,8 +86,7 @@ TEST(InterpolatorySqrt3, RegularRuleReproducesCubics) {
   PolygonMesh grid = test::triangle_grid(7, 7);
   auto cubic = [](double x, double y) { return 0.3 * x * x * x - 0.2 * x * x * y + 0.1 * x * y * y + 0.05 * y * y * y - x * y + 2.0 * x - y + 1.0; };
   for (Vec3& p : grid.positions) p.z = cubic(p.x, p.y);
-  Scheme open = interpolatory_sqrt3_scheme();
-  open.needs_closed_mesh = false;
+  const Scheme& open = interpolatory_sqrt3_scheme();
   const PolygonMesh child = refine(grid, open, levels(1));
   int checked = 0;
   for (Index f = 0; f < grid.face_count(); ++f) {
@@ -147,12 +146,98 @@ TEST(InterpolatorySqrt3, AnalysisIsC1AtEveryValence) {
   }
 }
 
-TEST(InterpolatorySqrt3, RefusesOpenMeshes) {
-  try {
-    refine(test::triangle_grid(2, 2), interpolatory_sqrt3_scheme(), levels(1));
-    FAIL() << "no error";
-  } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("interpolatory-sqrt3 needs a closed mesh"), std::string::npos) << e.what();
+// Boundaries. A face on the boundary takes the 12-point rule with the
+// stencil's points beyond the boundary continued linearly (the apex across
+// edge (p, q) of triangle (p, q, r) is p + q - r). Derived by hand for a face
+// (a, b, c) with boundary edge (a, b) on a regular boundary: 1/3 on a and b,
+// 37/81 on c, -1/81 on the apices across (b, c) and (c, a), -2/81 on a's and
+// b's other boundary neighbours and on the two apices beyond those.
+TEST(InterpolatorySqrt3, BoundaryFaceRuleGolden) {
+  const int n = 6;
+  const PolygonMesh grid = test::triangle_grid(n, n);
+  const StencilTable table = refine_stencil_table(grid, interpolatory_sqrt3_scheme(), levels(1));
+  auto at = [&](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  Index face = kInvalidIndex;
+  for (Index f = 0; f < grid.face_count(); ++f) {
+    const auto v = grid.face(f);
+    if (std::set<Index>(v.begin(), v.end()) == std::set<Index>{at(2, 0), at(3, 0), at(3, 1)}) face = f;
+  }
+  ASSERT_NE(face, kInvalidIndex);
+  const auto row = test::merged_row(table, face);
+  EXPECT_NEAR(row.at(at(2, 0)), 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(row.at(at(3, 0)), 1.0 / 3.0, 1e-15);
+  EXPECT_NEAR(row.at(at(3, 1)), 37.0 / 81.0, 1e-15);
+  EXPECT_NEAR(row.at(at(1, 0)), -2.0 / 81.0, 1e-15);  // the boundary neighbours beyond
+  EXPECT_NEAR(row.at(at(4, 0)), -2.0 / 81.0, 1e-15);
+  int tips = 0, outer = 0;
+  double sum = 0.0;
+  for (const auto& [v, w] : row) {
+    tips += std::fabs(w + 1.0 / 81.0) < 1e-15;
+    outer += std::fabs(w + 2.0 / 81.0) < 1e-15;
+    sum += w;
+  }
+  EXPECT_EQ(row.size(), 9u);
+  EXPECT_EQ(tips, 2);
+  EXPECT_EQ(outer, 4);
+  EXPECT_NEAR(sum, 1.0, 1e-15);
+}
+
+// The trisecting steps refine the boundary by the ternary four-point rule
+// (-5, 60, 30, -4)/81, the cubic through four boundary vertices: a boundary
+// sampled from a cubic stays on it, whatever the interior does.
+TEST(InterpolatorySqrt3, BoundaryCurveIsTheTernaryFourPointCurve) {
+  const int n = 8;
+  PolygonMesh grid = test::triangle_grid(n, n);
+  auto cubic = [](double x) { return 0.02 * x * x * x - 0.3 * x * x + x; };
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> noise(-1.0, 1.0);
+  for (Vec3& p : grid.positions) p.z = p.y == 0 ? cubic(p.x) : noise(random);
+  const PolygonMesh twice = refine(grid, interpolatory_sqrt3_scheme(), levels(2));  // the second step trisects
+  int checked = 0;
+  for (const Vec3& p : twice.positions) {
+    if (std::fabs(p.y) > 1e-12 || p.x < 2 || p.x > n - 2) continue;
+    EXPECT_NEAR(3.0 * p.x, std::round(3.0 * p.x), 1e-12);  // at the thirds
+    EXPECT_NEAR(p.z, cubic(p.x), 1e-12) << p.x;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3 * (n - 4) + 1);
+}
+
+// Open meshes: vertices stay, rows sum to one, the fast path agrees with
+// the stencils, linear functions are reproduced (the boundary rules keep
+// linear precision), and the result is a valid mesh.
+TEST(InterpolatorySqrt3, OpenMeshesInterpolateAndReproduceLinearFunctions) {
+  PolygonMesh grid = test::triangle_grid(5, 4);
+  for (Vec3& p : grid.positions) p.z = 0.5 * p.x - 0.25 * p.y + 1.0;
+  PolygonMesh last;
+  const std::vector<StencilTable> tables = refine_stencils(grid, interpolatory_sqrt3_scheme(), levels(3), &last);
+  for (const StencilTable& table : tables)
+    for (Index r = 0; r < table.row_count(); ++r) {
+      double sum = 0.0;
+      for (const auto& [v, w] : test::merged_row(table, r)) sum += w;
+      EXPECT_NEAR(sum, 1.0, 1e-14) << r;
+    }
+  const PolygonMesh fast = refine(grid, interpolatory_sqrt3_scheme(), levels(3));
+  ASSERT_EQ(fast.positions.size(), last.positions.size());
+  for (std::size_t i = 0; i < fast.positions.size(); ++i) {
+    EXPECT_NEAR(norm(fast.positions[i] - last.positions[i]), 0.0, 1e-13);
+    const Vec3 p = fast.positions[i];
+    EXPECT_NEAR(p.z, 0.5 * p.x - 0.25 * p.y + 1.0, 1e-12) << i;
+  }
+  const Index first_old = fast.vertex_count() - grid.vertex_count();
+  for (Index v = 0; v < grid.vertex_count(); ++v)
+    EXPECT_EQ(norm(fast.positions[static_cast<std::size_t>(first_old + v)] - grid.positions[v]), 0.0) << v;
+  EXPECT_TRUE(validate(fast).ok());
+}
+
+// The analysis at boundary sectors of 1..5 faces: C1 (the boundary curve's
+// 1/3 over two steps, the cross direction below it).
+TEST(InterpolatorySqrt3, AnalysisIsC1AtBoundarySectors) {
+  for (int k = 1; k <= 5; ++k) {
+    const ConfigurationAnalysis a = analyze(interpolatory_sqrt3_scheme(), {Configuration::Kind::boundary, k});
+    ASSERT_TRUE(a.matrix.invariant) << k;
+    EXPECT_NEAR(a.leading[1].real(), 1.0 / 3.0, 1e-12) << k;
+    EXPECT_EQ(a.verdict, SmoothnessVerdict::c1) << k << ": " << a.reason;
   }
 }
 
