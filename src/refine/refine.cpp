@@ -422,20 +422,16 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
         throw InvalidInputError(where(lines, &SourceLines::vertex_lines, static_cast<std::size_t>(v)) +
                                 std::string(scheme.name) + " needs a closed mesh, but vertex " + std::to_string(v) +
                                 " is on a boundary (it has no boundary rules)");
-  if (scheme.needs_triangles)
+  // Schemes whose rules read one kind of face refuse the first other face.
+  auto require_faces_of = [&](Index sides, const char* kind, const char* remedy) {
     for (Index f = 0; f < mesh.face_count(); ++f)
-      if (mesh.face_size(f) != 3)
+      if (mesh.face_size(f) != sides)
         throw InvalidInputError(where(lines, &SourceLines::face_lines, static_cast<std::size_t>(f)) +
-                                std::string(scheme.name) + " needs a triangle mesh, but face " + std::to_string(f) +
-                                " has " + std::to_string(mesh.face_size(f)) +
-                                " vertices (triangulate it first, e.g. with --triangulate)");
-  if (scheme.needs_quads)
-    for (Index f = 0; f < mesh.face_count(); ++f)
-      if (mesh.face_size(f) != 4)
-        throw InvalidInputError(where(lines, &SourceLines::face_lines, static_cast<std::size_t>(f)) +
-                                std::string(scheme.name) + " needs a quad mesh, but face " + std::to_string(f) +
-                                " has " + std::to_string(mesh.face_size(f)) +
-                                " vertices (one bilinear or catmull-clark level first makes every face a quad)");
+                                std::string(scheme.name) + " needs a " + kind + " mesh, but face " + std::to_string(f) +
+                                " has " + std::to_string(mesh.face_size(f)) + " vertices (" + remedy + ")");
+  };
+  if (scheme.needs_triangles) require_faces_of(3, "triangle", "triangulate it first, e.g. with --triangulate");
+  if (scheme.needs_quads) require_faces_of(4, "quad", "one bilinear or catmull-clark level first makes every face a quad");
   return topology;
 }
 

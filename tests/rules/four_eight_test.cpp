@@ -13,6 +13,7 @@
 #include "subdiv/mesh/validation.h"
 #include "subdiv/refine/refine.h"
 #include "support/refine_options.h"
+#include "support/stencil_checks.h"
 #include "support/stencil_rows.h"
 #include "support/test_meshes.h"
 
@@ -124,15 +125,9 @@ TEST(FourEight, RowsSumToOneAndAffineInvariance) {
   for (Vec3& p : mesh.positions) p += Vec3{jitter(random), jitter(random), jitter(random)};
   PolygonMesh last;
   const std::vector<StencilTable> tables = refine_stencils(mesh, four_eight_scheme(), levels(3), &last);
-  for (const StencilTable& table : tables)
-    for (Index r = 0; r < table.row_count(); ++r) {
-      double s = 0.0;
-      for (const auto& [v, w] : test::merged_row(table, r)) s += w;
-      EXPECT_NEAR(s, 1.0, 1e-14) << r;
-    }
+  test::expect_rows_sum_to_one(tables, 1e-14);
   const PolygonMesh fast = refine(mesh, four_eight_scheme(), levels(3));
-  ASSERT_EQ(fast.positions.size(), last.positions.size());
-  for (std::size_t i = 0; i < fast.positions.size(); ++i) EXPECT_NEAR(norm(fast.positions[i] - last.positions[i]), 0.0, 1e-14);
+  test::expect_same_positions(fast, last, 1e-14);
   PolygonMesh moved = mesh;
   auto map = [](Vec3 p) { return Vec3{p.x - 2.0 * p.z + 1.0, 3.0 * p.y, p.x + p.y + p.z}; };
   for (Vec3& p : moved.positions) p = map(p);

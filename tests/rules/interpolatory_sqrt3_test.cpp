@@ -14,6 +14,7 @@
 #include "subdiv/mesh/validation.h"
 #include "subdiv/refine/refine.h"
 #include "support/refine_options.h"
+#include "support/stencil_checks.h"
 #include "support/stencil_rows.h"
 #include "support/test_meshes.h"
 
@@ -112,12 +113,7 @@ TEST(InterpolatorySqrt3, InterpolatesAndRowsSumToOne) {
   const PolygonMesh mesh = closed_triangles(3);
   PolygonMesh last;
   const std::vector<StencilTable> tables = refine_stencils(mesh, interpolatory_sqrt3_scheme(), levels(3), &last);
-  for (const StencilTable& table : tables)
-    for (Index r = 0; r < table.row_count(); ++r) {
-      double sum = 0.0;
-      for (const auto& [v, w] : test::merged_row(table, r)) sum += w;
-      EXPECT_NEAR(sum, 1.0, 1e-14) << r;
-    }
+  test::expect_rows_sum_to_one(tables, 1e-14);
   const PolygonMesh fast = refine(mesh, interpolatory_sqrt3_scheme(), levels(3));
   ASSERT_EQ(fast.positions.size(), last.positions.size());
   const Index first_old = fast.vertex_count() - mesh.vertex_count();
@@ -211,12 +207,7 @@ TEST(InterpolatorySqrt3, OpenMeshesInterpolateAndReproduceLinearFunctions) {
   for (Vec3& p : grid.positions) p.z = 0.5 * p.x - 0.25 * p.y + 1.0;
   PolygonMesh last;
   const std::vector<StencilTable> tables = refine_stencils(grid, interpolatory_sqrt3_scheme(), levels(3), &last);
-  for (const StencilTable& table : tables)
-    for (Index r = 0; r < table.row_count(); ++r) {
-      double sum = 0.0;
-      for (const auto& [v, w] : test::merged_row(table, r)) sum += w;
-      EXPECT_NEAR(sum, 1.0, 1e-14) << r;
-    }
+  test::expect_rows_sum_to_one(tables, 1e-14);
   const PolygonMesh fast = refine(grid, interpolatory_sqrt3_scheme(), levels(3));
   ASSERT_EQ(fast.positions.size(), last.positions.size());
   for (std::size_t i = 0; i < fast.positions.size(); ++i) {

@@ -12,6 +12,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
 #include "support/refine_options.h"
+#include "support/stencil_checks.h"
 #include "support/stencil_rows.h"
 #include "support/test_meshes.h"
 
@@ -238,15 +239,9 @@ TEST(Kobbelt, InterpolatesRowsSumToOneAndAffineInvariance) {
   for (Vec3& p : mesh.positions) p += Vec3{jitter(random), jitter(random), jitter(random)};
   PolygonMesh last;
   const std::vector<StencilTable> tables = refine_stencils(mesh, kobbelt_scheme(), levels(3), &last);
-  for (const StencilTable& table : tables)
-    for (Index r = 0; r < table.row_count(); ++r) {
-      double s = 0.0;
-      for (const auto& [v, w] : test::merged_row(table, r)) s += w;
-      EXPECT_NEAR(s, 1.0, 1e-13) << r;
-    }
+  test::expect_rows_sum_to_one(tables, 1e-13);
   const PolygonMesh fast = refine(mesh, kobbelt_scheme(), levels(3));
-  ASSERT_EQ(fast.positions.size(), last.positions.size());
-  for (std::size_t i = 0; i < fast.positions.size(); ++i) EXPECT_NEAR(norm(fast.positions[i] - last.positions[i]), 0.0, 1e-13);
+  test::expect_same_positions(fast, last, 1e-13);
   // Old vertices stay: the control points come last at every level.
   const PolygonMesh one = refine(mesh, kobbelt_scheme(), levels(1));
   const auto first_old = static_cast<std::size_t>(one.vertex_count() - mesh.vertex_count());
