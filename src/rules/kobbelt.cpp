@@ -122,6 +122,7 @@ bool add_sector_virtual_point(const LevelView& level, Index v, Index e, bool cor
   const int m = static_cast<int>(edges.size());
   const bool cyclic = static_cast<int>(corners.size()) == m;  // an interior vertex on a crease
   const int i = ring_position(t, v, e);
+  if (i < 0) return false;
   auto sharp = [&](int j) { return sharp_at(level, edges[static_cast<std::size_t>((j + m) % m)], v); };
   int first = i, last = i;  // the sector's sharp edges, in ring positions (last may pass m on a cyclic ring)
   while (!sharp(first)) {
@@ -185,6 +186,7 @@ void add_beyond(const LevelView& level, Index v, Index e, double s, MaskBuilder&
   const int n = static_cast<int>(edges.size());
   if (t.vertex_kind(v) != VertexKind::interior || t.vertex_face_count(v) != n || n < 3) return extrapolate();
   const int i = ring_position(t, v, e);
+  if (i < 0) return extrapolate();
   if (n == 4) return mask.add(t.other_vertex(edges[static_cast<std::size_t>((i + 2) % 4)], v), s);
   const auto corners = t.vertex_corners(v);
   for (const Index c : corners)
