@@ -124,7 +124,8 @@ void add_extraordinary_rule(const MeshTopology& t, Index c, double w, MaskBuilde
 }
 
 // A point of the 12-point rule's stencil: a vertex, or where the stencil
-// leaves the mesh a ghost, a short combination of vertices.
+// leaves the mesh a ghost, a short combination of vertices (of at most
+// four: the face's three and the apex across one of its edges).
 struct StencilPoint {
   std::array<Index, 6> vertices{};
   std::array<double, 6> weights{};
