@@ -269,6 +269,70 @@ void MeshTopology::lay_out_vertex_incidence() {
   detail::assign_large(fan_count_, n, 1);
 }
 
+void MeshTopology::lay_out_point_split_incidence(const MeshTopology& p, Index face_point_ring) {
+  const Index nf = p.face_count(), nv = p.vertex_count();
+  detail::assign_large(vertex_corner_offsets_, static_cast<std::size_t>(nf + nv) + 1, 0);
+  detail::assign_large(vertex_edge_offsets_, static_cast<std::size_t>(nf + nv) + 1, 0);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 16384), [&](const tbb::blocked_range<Index>& range) {
+    for (Index f = range.begin(); f != range.end(); ++f)
+      vertex_corner_offsets_[f + 1] = vertex_edge_offsets_[f + 1] = face_point_ring > 0 ? face_point_ring : p.face_size(f);
+  });
+  for (Index v = 0; v < nv; ++v) {
+    vertex_corner_offsets_[nf + v + 1] = p.vertex_face_count(v);
+    vertex_edge_offsets_[nf + v + 1] = p.valence(v);
+  }
+  lay_out_vertex_incidence();
+}
+
+// Face j of a ring leaves its vertex along edge j and enters along j + 1.
+void MeshTopology::write_ring_from_smallest_corner(Index cv, const Index* ring_corners, const Index* ring_edges, Index n) {
+  const auto start = static_cast<Index>(std::min_element(ring_corners, ring_corners + n) - ring_corners);
+  Index* out_c = vertex_corners_.data() + vertex_corner_offsets_[cv];
+  Index* out_e = vertex_edges_.data() + vertex_edge_offsets_[cv];
+  for (Index k = 0; k < n; ++k) {
+    const Index at = start + k < n ? start + k : start + k - n;
+    out_c[k] = ring_corners[at];
+    out_e[k] = ring_edges[at];
+  }
+}
+
+// The child faces of parent edge e hold corners corners_per_edge * e ..,
+// the first half on e's first side, the second on the other; a vertex
+// point's ring has a child face per parent edge, between the spokes to the
+// faces on either side. spoke_of[c]: the child edge from the face point of
+// parent corner c's face to c's vertex point.
+void MeshTopology::derive_vertex_point_rings(const MeshTopology& p, Index vertex_point, Index corners_per_edge,
+                                             std::span<const Index> spoke_of) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, p.vertex_count(), 4096), [&](const tbb::blocked_range<Index>& range) {
+    std::vector<Index> ring_corners, ring_edges;
+    for (Index v = range.begin(); v != range.end(); ++v) {
+      const Index cv = vertex_point + v;
+      if (p.vertex_kind_[v] == VertexKind::isolated) {
+        vertex_kind_[cv] = VertexKind::isolated;
+        ring_ordered_[cv] = 0;
+        fan_count_[cv] = 0;
+        continue;
+      }
+      // The child face of ring edge e_j lies between the spokes to faces
+      // j - 1 (leaving) and j (entering).
+      const auto faces = p.vertex_corners(v);
+      const auto edges = p.vertex_edges(v);
+      const auto k = static_cast<Index>(edges.size());
+      ring_corners.resize(static_cast<std::size_t>(k));
+      ring_edges.resize(static_cast<std::size_t>(k));
+      for (Index j = 0; j < k; ++j) {
+        // Corner j leaves v along e_j: the first child face's V corner if it
+        // is e_j's first side (running from a), else the second's.
+        const Index e = edges[static_cast<std::size_t>(j)];
+        const bool first_side = p.edge_corners(e)[0] == faces[static_cast<std::size_t>(j)];
+        ring_corners[static_cast<std::size_t>(j)] = corners_per_edge * e + (first_side ? 0 : corners_per_edge / 2);
+        ring_edges[static_cast<std::size_t>(j)] = spoke_of[static_cast<std::size_t>(faces[static_cast<std::size_t>(j == 0 ? k - 1 : j - 1)])];
+      }
+      write_ring_from_smallest_corner(cv, ring_corners.data(), ring_edges.data(), k);
+    }
+  });
+}
+
 void MeshTopology::build_boundary_loops() {
   std::vector<Index> boundary_edges;
   for (Index e = 0; e < edge_count(); ++e)

@@ -74,31 +74,7 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
       c[0] = spoke_of[Ga], c[1] = spoke_of[Gb], c[2] = spoke_of[Fb], c[3] = spoke_of[Fa];
     }
   });
-  const Index child_vertices = nf + nv;
-  detail::assign_large(t.vertex_corner_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
-  detail::assign_large(t.vertex_edge_offsets_, static_cast<std::size_t>(child_vertices) + 1, 0);
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 16384), [&](const tbb::blocked_range<Index>& range) {
-    for (Index f = range.begin(); f != range.end(); ++f)
-      t.vertex_corner_offsets_[f + 1] = t.vertex_edge_offsets_[f + 1] = p.face_size(f);
-  });
-  for (Index v = 0; v < nv; ++v) {
-    t.vertex_corner_offsets_[vertex_point + v + 1] = p.vertex_face_count(v);
-    t.vertex_edge_offsets_[vertex_point + v + 1] = p.valence(v);
-  }
-  t.lay_out_vertex_incidence();
-
-  // Face j of a ring leaves its vertex along edge j and enters along j + 1;
-  // rings start at their smallest corner (the generic walk's order).
-  auto write_ring = [&](Index cv, const Index* ring_corners, const Index* ring_edges, Index n) {
-    const auto start = std::min_element(ring_corners, ring_corners + n) - ring_corners;
-    Index* out_c = t.vertex_corners_.data() + t.vertex_corner_offsets_[cv];
-    Index* out_e = t.vertex_edges_.data() + t.vertex_edge_offsets_[cv];
-    for (Index k = 0; k < n; ++k) {
-      const Index at = static_cast<Index>(start) + k < n ? static_cast<Index>(start) + k : static_cast<Index>(start) + k - n;
-      out_c[k] = ring_corners[at];
-      out_e[k] = ring_edges[at];
-    }
-  };
+  t.lay_out_point_split_incidence(p, 0);  // a face point: its face's corners and edges
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     std::vector<Index> ring_corners, ring_edges;
     std::vector<char> first_side;  // f is e_i's F, v_i its a
@@ -124,35 +100,10 @@ std::optional<MeshTopology> MeshTopology::from_sqrt2_split(const MeshTopology& p
         t.edge_corners_[2 * spoke] = std::min(here, other);
         t.edge_corners_[2 * spoke + 1] = std::max(here, other);
       }
-      write_ring(f, ring_corners.data(), ring_edges.data(), n);
+      t.write_ring_from_smallest_corner(f, ring_corners.data(), ring_edges.data(), n);
     }
   });
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::vector<Index> ring_corners, ring_edges;
-    for (Index v = range.begin(); v != range.end(); ++v) {
-      const Index cv = vertex_point + v;
-      if (p.vertex_kind_[v] == VertexKind::isolated) {
-        t.vertex_kind_[cv] = VertexKind::isolated;
-        t.ring_ordered_[cv] = 0;
-        t.fan_count_[cv] = 0;
-        continue;
-      }
-      // The child face of ring edge e_j lies between the spokes to faces
-      // j - 1 (leaving) and j (entering).
-      const auto faces = p.vertex_corners(v);
-      const auto edges = p.vertex_edges(v);
-      const auto k = static_cast<Index>(edges.size());
-      ring_corners.resize(static_cast<std::size_t>(k));
-      ring_edges.resize(static_cast<std::size_t>(k));
-      for (Index j = 0; j < k; ++j) {
-        const Index e = edges[static_cast<std::size_t>(j)];
-        // Corner j leaves v along e_j: V(a) if it is e_j's first side, else V(b).
-        ring_corners[static_cast<std::size_t>(j)] = 4 * e + (p.edge_corners(e)[0] == faces[static_cast<std::size_t>(j)] ? 0 : 2);
-        ring_edges[static_cast<std::size_t>(j)] = spoke_of[static_cast<std::size_t>(faces[static_cast<std::size_t>(j == 0 ? k - 1 : j - 1)])];
-      }
-      write_ring(cv, ring_corners.data(), ring_edges.data(), k);
-    }
-  });
+  t.derive_vertex_point_rings(p, vertex_point, 4, spoke_of);
   t.build_boundary_loops();
   return t;
 }

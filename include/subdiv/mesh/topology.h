@@ -159,6 +159,15 @@ class MeshTopology {
   void lay_out_vertex_incidence();
   template <typename ChildCorner, typename Half>
   void inherit_vertex_points(const MeshTopology& parent, Index vertex_point, ChildCorner child_corner, Half half);
+  // Shared by the sqrt3 and sqrt2 derivations: lay out the incidence of a
+  // child level [face points | vertex points] whose face points have
+  // `face_point_ring` corners (0: their parent face's size); write a ring
+  // from its smallest corner on (the generic walk's order); and write the
+  // vertex points' rings.
+  void lay_out_point_split_incidence(const MeshTopology& parent, Index face_point_ring);
+  void write_ring_from_smallest_corner(Index child_vertex, const Index* ring_corners, const Index* ring_edges, Index n);
+  void derive_vertex_point_rings(const MeshTopology& parent, Index vertex_point, Index corners_per_edge,
+                                 std::span<const Index> spoke_of);
 
   std::vector<Index> face_offsets_;
   std::vector<Index> corner_vertex_;
