@@ -85,6 +85,45 @@ Index apex_across(const MeshTopology& t, Index c) {
 
 bool regular(const MeshTopology& t, Index v) { return t.vertex_kind(v) != VertexKind::interior || t.valence(v) == 6; }
 
+// The 12-point rule read off the corners' one-rings, where all three are
+// interior vertices of valence 6 with ordered rings (nearly every face
+// after a level or two); false (and nothing added) otherwise. On the
+// regular grid the rule's twelve points are exactly the three one-rings.
+// Around corner vertex v, with our face as face j of its ring, face j+3 is
+// the opposite face: its other two vertices are v's own points beyond
+// (-2/81 each). Face j+5 shares one of v's edges with our face: its vertex
+// off our face is the apex across that edge (-1/81). The rings of the three
+// corners turn the same way, so the three corners name the face's three
+// apices once each. This is add_regular_rule's rule; it reads each corner's
+// contiguous ring instead of chasing corner_across three faces deep, which
+// waits on memory.
+bool add_regular_rule_from_rings(const MeshTopology& t, Index f, MaskBuilder& mask) {
+  const Index first = t.face_first_corner(f);
+  Index points[3][3];
+  for (Index i = 0; i < 3; ++i) {
+    const Index c = first + i;
+    const Index v = t.corner_vertex(c);
+    const auto corners = t.vertex_corners(v);
+    if (corners.size() != 6 || t.vertex_kind(v) != VertexKind::interior || !t.ring_ordered(v)) return false;
+    std::size_t j = 0;
+    while (corners[j] != c) ++j;
+    const Index opposite = corners[(j + 3) % 6];
+    points[i][1] = t.corner_vertex(t.corner_next(opposite));
+    points[i][2] = t.corner_vertex(t.corner_prev(opposite));
+    const Index side = corners[(j + 5) % 6];
+    const Index x = t.corner_vertex(t.corner_next(side));
+    const bool x_on_face = x == t.corner_vertex(t.corner_next(c)) || x == t.corner_vertex(t.corner_prev(c));
+    points[i][0] = x_on_face ? t.corner_vertex(t.corner_prev(side)) : x;
+  }
+  for (Index i = 0; i < 3; ++i) {
+    mask.add(t.corner_vertex(first + i), 32.0 / 81.0);
+    mask.add(points[i][0], -1.0 / 81.0);
+    mask.add(points[i][1], -2.0 / 81.0);
+    mask.add(points[i][2], -2.0 / 81.0);
+  }
+  return true;
+}
+
 // The 12-point rule; false (and nothing added) where a neighbour it needs
 // is missing.
 bool add_regular_rule(const MeshTopology& t, Index f, MaskBuilder& mask) {
@@ -202,10 +241,11 @@ void add_regular_rule_with_ghosts(const MeshTopology& t, Index f, MaskBuilder& m
 void face_point(const LevelView& level, Index f, MaskBuilder& mask) {
   const MeshTopology& t = level.topology;
   const Index first = t.face_first_corner(f);
+  // Each add_regular_rule* finds all its vertices before adding any.
+  if (add_regular_rule_from_rings(t, f, mask)) return;
   int irregular = 0;
   for (Index c = first; c < first + 3; ++c) irregular += !regular(t, t.corner_vertex(c));
   if (irregular == 0) {
-    // add_regular_rule finds all its vertices before adding any.
     if (!add_regular_rule(t, f, mask)) add_regular_rule_with_ghosts(t, f, mask);
     return;
   }
