@@ -66,7 +66,10 @@ class MeshTopology {
   Index edge_count() const { return static_cast<Index>(edge_vertices_.size()); }
 
   // --- faces and corners -------------------------------------------------
-  Index face_size(Index f) const { return face_offsets_[f + 1] - face_offsets_[f]; }
+  Index face_size(Index f) const {
+    if (uniform_face_size_ != 0) return uniform_face_size_;  // no loads on refined levels
+    return face_offsets_[f + 1] - face_offsets_[f];
+  }
   Index face_first_corner(Index f) const { return face_offsets_[f]; }
   /// The vertices of face f, in order (the mesh's face f).
   std::span<const Index> face_vertices(Index f) const {
