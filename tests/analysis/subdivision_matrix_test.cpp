@@ -7,9 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "subdiv/analysis/ring_mesh.h"
 #include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/validation.h"
 #include "subdiv/rules/catmull_clark.h"
@@ -80,14 +83,34 @@ TEST(SubdivisionMatrix, CatmullClarkOneRingSubdominantEigenvalue) {
   }
 }
 
-TEST(SubdivisionMatrix, RotationIsASymmetryOfTheMatrix) {
-  for (const Scheme* s : {&loop_scheme(), &catmull_clark_scheme()}) {
-    const LocalSubdivisionMatrix m = local_subdivision_matrix(*s, interior(5), 2);
-    ASSERT_EQ(m.rotate.size(), static_cast<std::size_t>(m.S.rows()));
-    Eigen::MatrixXd P = Eigen::MatrixXd::Zero(m.S.rows(), m.S.cols());
-    for (std::size_t i = 0; i < m.rotate.size(); ++i) P(m.rotate[i], static_cast<Eigen::Index>(i)) = 1.0;
-    EXPECT_LT((P * m.S - m.S * P).norm(), 1e-13) << s->name;
+// Every surface scheme's rules are symmetric under rotation of the ring: at
+// valences 3, 5 and 7 the matrix (of one period) commutes with the rotation
+// by 2 pi / k. A mask that favoured one spoke, or a ring read in the wrong
+// order, breaks this. Schemes the ring layout does not cover say so (only
+// quasi 4-8, whose split follows the geometry); every other must be checked.
+TEST(SubdivisionMatrix, EverySchemeIsSymmetricUnderRotationOfTheRing) {
+  std::vector<std::string> checked;
+  for (const Scheme* s : all_schemes()) {
+    bool covered = true;
+    for (const int k : {3, 5, 7}) {
+      LocalSubdivisionMatrix m;
+      try {
+        m = local_subdivision_matrix(*s, interior(k), 2);
+      } catch (const InvalidInputError&) {
+        covered = false;
+        break;
+      }
+      ASSERT_EQ(m.rotate.size(), static_cast<std::size_t>(m.S.rows())) << s->name << " k=" << k;
+      Eigen::MatrixXd P = Eigen::MatrixXd::Zero(m.S.rows(), m.S.cols());
+      for (std::size_t i = 0; i < m.rotate.size(); ++i) P(m.rotate[i], static_cast<Eigen::Index>(i)) = 1.0;
+      EXPECT_LT((P * m.S - m.S * P).norm(), 1e-12 * std::max(1.0, m.S.norm())) << s->name << " k=" << k;
+    }
+    if (covered) checked.emplace_back(s->name);
   }
+  for (const char* name : {"catmull-clark", "loop", "loop-warren", "butterfly", "modified-butterfly", "doo-sabin",
+                           "midedge", "sqrt3", "interpolatory-sqrt3", "kobbelt", "four-eight", "gcc", "midpoint",
+                           "bilinear", "linear"})
+    EXPECT_NE(std::find(checked.begin(), checked.end(), name), checked.end()) << name << " was not checked";
 }
 
 // A made-up scheme whose vertex points reach two rings out: its vertex point
