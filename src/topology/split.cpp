@@ -143,8 +143,8 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
     else if (rule == SplitRule::triangle) detail::triangle_split_face_varying(topology, in, out);
     else if (rule == SplitRule::dual) detail::dual_split_face_varying(topology, map, child, in, out);
     else if (rule == SplitRule::identity) out = in;
-    else if (rule == SplitRule::sqrt3) detail::sqrt3_split_face_varying(topology, map, child, in, out);
-    else if (rule == SplitRule::sqrt2) detail::sqrt2_split_face_varying(topology, map, child, in, out);
+    else if (rule == SplitRule::sqrt3 || rule == SplitRule::sqrt2)
+      detail::point_split_face_varying(topology, map, child, in, out);
     else detail::midedge_split_face_varying(topology, child, in, out);
   }
   return map;

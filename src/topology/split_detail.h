@@ -29,12 +29,8 @@ void dual_split_face_varying(const MeshTopology& topology, const SplitMap& map, 
 void midedge_split_face_varying(const MeshTopology& topology, const PolygonMesh& child, const FaceVaryingChannel& in,
                                 FaceVaryingChannel& out);
 
-/// Sqrt3 split: one value per child vertex (sqrt3_split.cpp).
-void sqrt3_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
-                              const FaceVaryingChannel& in, FaceVaryingChannel& out);
-
-/// Sqrt2 split: one value per child vertex (sqrt2_split.cpp).
-void sqrt2_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
+/// Sqrt3 and sqrt2 splits: one value per child vertex (sqrt3_split.cpp).
+void point_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
                               const FaceVaryingChannel& in, FaceVaryingChannel& out);
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,

@@ -62,28 +62,4 @@ SplitMap sqrt2_split(const MeshTopology& topo, PolygonMesh& child) {
   return map;
 }
 
-// One value per child vertex, seams not kept (child faces straddle the
-// parent's edges): a face point's is its face's centroid value, a vertex
-// point's its vertex's value in the first face around it.
-void sqrt2_split_face_varying(const MeshTopology& topo, const SplitMap& map, const PolygonMesh& child,
-                              const FaceVaryingChannel& in, FaceVaryingChannel& out) {
-  const auto k = static_cast<std::size_t>(in.components);
-  out.name = in.name;
-  out.components = in.components;
-  out.values.assign(static_cast<std::size_t>(map.child_vertex_count) * k, 0.0);
-  auto value = [&](Index corner) {
-    return in.values.data() + static_cast<std::size_t>(in.indices[static_cast<std::size_t>(corner)]) * k;
-  };
-  auto at = [&](Index child_vertex) { return out.values.data() + static_cast<std::size_t>(child_vertex) * k; };
-  for (Index f = 0; f < topo.face_count(); ++f)
-    for (Index c = topo.face_first_corner(f); c < topo.face_first_corner(f) + topo.face_size(f); ++c)
-      for (std::size_t j = 0; j < k; ++j) at(map.face_point(f))[j] += value(c)[j] / topo.face_size(f);
-  for (Index v = 0; v < topo.vertex_count(); ++v) {
-    const auto corners = topo.vertex_corners(v);
-    if (corners.empty()) continue;
-    for (std::size_t j = 0; j < k; ++j) at(map.vertex_point(v))[j] = value(corners[0])[j];
-  }
-  out.indices = child.face_indices;
-}
-
 }  // namespace subdiv::detail

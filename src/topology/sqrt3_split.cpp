@@ -186,8 +186,9 @@ SplitMap sqrt3_split(const MeshTopology& topo, PolygonMesh& child, int level) {
 // One value per child vertex, seams not kept (child faces straddle the
 // parent's edges): a face point's is its face's centroid value, a boundary
 // point's 2/3 and 1/3 of its edge's end values, a vertex point's its
-// vertex's value in the first face around it.
-void sqrt3_split_face_varying(const MeshTopology& topo, const SplitMap& map, const PolygonMesh& child,
+// vertex's value in the first face around it. The sqrt2 split's levels have
+// no boundary points and use it too.
+void point_split_face_varying(const MeshTopology& topo, const SplitMap& map, const PolygonMesh& child,
                               const FaceVaryingChannel& in, FaceVaryingChannel& out) {
   const auto k = static_cast<std::size_t>(in.components);
   out.name = in.name;

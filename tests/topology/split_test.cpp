@@ -138,75 +138,67 @@ TEST(Split, FaceVaryingDataIsLinearWithinFaces) {
 namespace subdiv {
 namespace {
 
-// The derived topology of a quad-split level equals the generic construction
-// from the child's faces, array for array, level after level.
-TEST(QuadSplit, DerivedTopologyEqualsTheGenericOne) {
-  std::vector<std::pair<std::string, PolygonMesh>> cases;
-  cases.emplace_back("cube", test::cube());
-  cases.emplace_back("grid", test::quad_grid(4, 3));
-  cases.emplace_back("triangles", test::triangle_grid(3, 2));
-  cases.emplace_back("spot", read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh);
-  PolygonMesh with_isolated = test::quad_grid(2, 2);
-  with_isolated.positions.push_back({9, 9, 9});
-  cases.emplace_back("isolated vertex", with_isolated);
-  PolygonMesh polygons = make_mesh({{0, 0, 0}, {1, 0, 0}, {2, 0.5, 0}, {1, 1, 0}, {0, 1, 0}, {3, 0, 0}},
-                                   {{0, 1, 2, 3, 4}, {1, 5, 2}});
-  cases.emplace_back("polygons", polygons);
+using DerivedTopology = std::optional<MeshTopology> (*)(const MeshTopology& parent, const PolygonMesh& child);
+using NamedMeshes = std::vector<std::pair<std::string, PolygonMesh>>;
+
+// Splits each mesh `levels` times with `rule`: every level's topology as
+// `derive` makes it from its parent's must equal the generic construction
+// from the child's faces, array for array.
+void expect_derived_topology_is_the_generic_one(const NamedMeshes& cases, SplitRule rule, DerivedTopology derive,
+                                                int levels) {
   for (const auto& [name, mesh] : cases) {
     PolygonMesh parent = mesh;
     std::optional<MeshTopology> topology = MeshTopology(parent);
-    for (int level = 1; level <= 3; ++level) {
+    for (int level = 0; level < levels; ++level) {
       PolygonMesh child;
-      split_topology(parent, *topology, SplitRule::quad, child);
-      const std::optional<MeshTopology> derived = MeshTopology::from_quad_split(*topology, child);
-      ASSERT_TRUE(derived.has_value()) << name;
-      const MeshTopology generic(child);
-      EXPECT_TRUE(*derived == generic) << name << " level " << level;
-      parent = std::move(child);
-      topology = derived;
-    }
-  }
-  // Non-manifold parents are left to the generic construction.
-  const PolygonMesh bowtie = make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}}, {{0, 1, 2}, {0, 3, 4}});
-  PolygonMesh child;
-  const MeshTopology t(bowtie);
-  split_topology(bowtie, t, SplitRule::quad, child);
-  EXPECT_FALSE(MeshTopology::from_quad_split(t, child).has_value());
-}
-
-}  // namespace
-}  // namespace subdiv
-
-namespace subdiv {
-namespace {
-
-TEST(TriangleSplit, DerivedTopologyEqualsTheGenericOne) {
-  std::vector<std::pair<std::string, PolygonMesh>> cases;
-  cases.emplace_back("tetrahedron", test::tetrahedron());
-  cases.emplace_back("grid", test::triangle_grid(4, 3));
-  cases.emplace_back("elephant", read_mesh(test::bundled_path("elephant.obj")).mesh);
-  PolygonMesh with_isolated = test::triangle_grid(2, 2);
-  with_isolated.positions.push_back({9, 9, 9});
-  cases.emplace_back("isolated vertex", with_isolated);
-  for (const auto& [name, mesh] : cases) {
-    PolygonMesh parent = mesh;
-    std::optional<MeshTopology> topology = MeshTopology(parent);
-    for (int level = 1; level <= (name == "elephant" ? 1 : 3); ++level) {
-      PolygonMesh child;
-      split_topology(parent, *topology, SplitRule::triangle, child);
-      const std::optional<MeshTopology> derived = MeshTopology::from_triangle_split(*topology, child);
+      split_topology(parent, *topology, rule, child, {}, level);
+      const std::optional<MeshTopology> derived = derive(*topology, child);
       ASSERT_TRUE(derived.has_value()) << name;
       EXPECT_TRUE(*derived == MeshTopology(child)) << name << " level " << level;
       parent = std::move(child);
       topology = derived;
     }
   }
+}
+
+// Parents the derivation does not cover are left to the generic construction.
+void expect_no_derived_topology(const PolygonMesh& mesh, SplitRule rule, DerivedTopology derive) {
+  const MeshTopology t(mesh);
+  PolygonMesh child;
+  split_topology(mesh, t, rule, child);
+  EXPECT_FALSE(derive(t, child).has_value());
+}
+
+PolygonMesh with_isolated_vertex(PolygonMesh mesh) {
+  mesh.positions.push_back({9, 9, 9});
+  return mesh;
+}
+
+TEST(QuadSplit, DerivedTopologyEqualsTheGenericOne) {
+  NamedMeshes cases;
+  cases.emplace_back("cube", test::cube());
+  cases.emplace_back("grid", test::quad_grid(4, 3));
+  cases.emplace_back("triangles", test::triangle_grid(3, 2));
+  cases.emplace_back("spot", read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh);
+  cases.emplace_back("isolated vertex", with_isolated_vertex(test::quad_grid(2, 2)));
+  cases.emplace_back("polygons", make_mesh({{0, 0, 0}, {1, 0, 0}, {2, 0.5, 0}, {1, 1, 0}, {0, 1, 0}, {3, 0, 0}},
+                                           {{0, 1, 2, 3, 4}, {1, 5, 2}}));
+  expect_derived_topology_is_the_generic_one(cases, SplitRule::quad, MeshTopology::from_quad_split, 3);
+  const PolygonMesh bowtie = make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}}, {{0, 1, 2}, {0, 3, 4}});
+  expect_no_derived_topology(bowtie, SplitRule::quad, MeshTopology::from_quad_split);
+}
+
+TEST(TriangleSplit, DerivedTopologyEqualsTheGenericOne) {
+  NamedMeshes cases;
+  cases.emplace_back("tetrahedron", test::tetrahedron());
+  cases.emplace_back("grid", test::triangle_grid(4, 3));
+  cases.emplace_back("isolated vertex", with_isolated_vertex(test::triangle_grid(2, 2)));
+  expect_derived_topology_is_the_generic_one(cases, SplitRule::triangle, MeshTopology::from_triangle_split, 3);
+  const NamedMeshes elephant = {{"elephant", read_mesh(test::bundled_path("elephant.obj")).mesh}};
+  expect_derived_topology_is_the_generic_one(elephant, SplitRule::triangle, MeshTopology::from_triangle_split, 1);
   // Two triangles on the same three vertices would merge child edges.
   const PolygonMesh pillow = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 1}});
-  PolygonMesh child;
-  const MeshTopology t(pillow);
-  split_topology(pillow, t, SplitRule::triangle, child);
-  EXPECT_FALSE(MeshTopology::from_triangle_split(t, child).has_value());
+  expect_no_derived_topology(pillow, SplitRule::triangle, MeshTopology::from_triangle_split);
 }
 
 // A closed m x n quad torus (or each quad split into two triangles), big
@@ -233,65 +225,74 @@ PolygonMesh torus_mesh(int m, int n, bool triangles) {
   return make_mesh(std::move(p), faces);
 }
 
-// The sqrt3 split's derived topology equals the one built from the child's
-// faces, level after level, on closed meshes; open meshes (whose trisecting
-// steps it does not cover) get none.
+// The sqrt3 split's derived topology, on closed meshes; open meshes (whose
+// trisecting steps it does not cover) get none.
 TEST(DerivedTopology, Sqrt3SplitMatchesTheGenericBuild) {
-  std::vector<std::pair<std::string, PolygonMesh>> cases;
+  NamedMeshes cases;
   cases.emplace_back("tetrahedron", test::tetrahedron());
   cases.emplace_back("cube", triangulate(test::cube()));
   cases.emplace_back("torus", torus_mesh(48, 32, true));
-  PolygonMesh with_isolated = test::tetrahedron();
-  with_isolated.positions.push_back({9, 9, 9});
-  cases.emplace_back("isolated vertex", with_isolated);
-  for (const auto& [name, mesh] : cases) {
-    PolygonMesh parent = mesh;
-    std::optional<MeshTopology> topology = MeshTopology(parent);
-    for (int level = 0; level < 4; ++level) {
-      PolygonMesh child;
-      split_topology(parent, *topology, SplitRule::sqrt3, child, {}, level);
-      const std::optional<MeshTopology> derived = MeshTopology::from_sqrt3_split(*topology, child);
-      ASSERT_TRUE(derived.has_value()) << name;
-      EXPECT_TRUE(*derived == MeshTopology(child)) << name << " level " << level;
-      parent = std::move(child);
-      topology = derived;
-    }
-  }
-  const PolygonMesh open = test::triangle_grid(3, 2);
-  const MeshTopology t(open);
-  PolygonMesh child;
-  split_topology(open, t, SplitRule::sqrt3, child);
-  EXPECT_FALSE(MeshTopology::from_sqrt3_split(t, child).has_value());
+  cases.emplace_back("isolated vertex", with_isolated_vertex(test::tetrahedron()));
+  expect_derived_topology_is_the_generic_one(cases, SplitRule::sqrt3, MeshTopology::from_sqrt3_split, 4);
+  expect_no_derived_topology(test::triangle_grid(3, 2), SplitRule::sqrt3, MeshTopology::from_sqrt3_split);
 }
 
-// The same for the sqrt2 split, on closed polygon meshes (the cube's quads,
-// a mix of triangles and quads).
+// The sqrt2 split's, on closed polygon meshes (the cube's quads, a mix of
+// triangles and quads); open meshes get none.
 TEST(DerivedTopology, Sqrt2SplitMatchesTheGenericBuild) {
-  std::vector<std::pair<std::string, PolygonMesh>> cases;
+  NamedMeshes cases;
   cases.emplace_back("cube", test::cube());
   cases.emplace_back("tetrahedron", test::tetrahedron());
   cases.emplace_back("torus", torus_mesh(48, 32, false));
-  PolygonMesh with_isolated = test::cube();
-  with_isolated.positions.push_back({9, 9, 9});
-  cases.emplace_back("isolated vertex", with_isolated);
-  for (const auto& [name, mesh] : cases) {
-    PolygonMesh parent = mesh;
-    std::optional<MeshTopology> topology = MeshTopology(parent);
-    for (int level = 0; level < 4; ++level) {
-      PolygonMesh child;
-      split_topology(parent, *topology, SplitRule::sqrt2, child);
-      const std::optional<MeshTopology> derived = MeshTopology::from_sqrt2_split(*topology, child);
-      ASSERT_TRUE(derived.has_value()) << name;
-      EXPECT_TRUE(*derived == MeshTopology(child)) << name << " level " << level;
-      parent = std::move(child);
-      topology = derived;
+  cases.emplace_back("isolated vertex", with_isolated_vertex(test::cube()));
+  expect_derived_topology_is_the_generic_one(cases, SplitRule::sqrt2, MeshTopology::from_sqrt2_split, 4);
+  expect_no_derived_topology(test::quad_grid(3, 2), SplitRule::sqrt2, MeshTopology::from_sqrt2_split);
+}
+
+// The sqrt2 and sqrt3 splits give each child vertex one value: a face
+// point its face's mean, a boundary point (sqrt3's trisecting steps) 2/3 and
+// 1/3 of its edge's ends, an old vertex its own. The data is seamless (one
+// value per vertex: uv = (x, y)), so each vertex's value is well defined.
+TEST(Split, FaceVaryingDataOfThePointSplits) {
+  for (const SplitRule rule : {SplitRule::sqrt2, SplitRule::sqrt3}) {
+    PolygonMesh mesh = rule == SplitRule::sqrt2 ? test::quad_grid(2, 2) : test::triangle_grid(2, 2);
+    FaceVaryingChannel uv{"uv", 2, {}, {}};
+    for (const Vec3& p : mesh.positions) uv.values.insert(uv.values.end(), {p.x, p.y});
+    uv.indices = mesh.face_indices;
+    mesh.face_varying_channels.push_back(uv);
+    // sqrt3: a step without boundary points first, so that the trisecting
+    // step (with them) gets a triangle per boundary edge.
+    for (int level = 0; level < (rule == SplitRule::sqrt3 ? 2 : 1); ++level) {
+      const MeshTopology t(mesh);
+      const FaceVaryingChannel& in = mesh.face_varying_channels.at(0);
+      std::vector<Vec3> value(static_cast<std::size_t>(mesh.vertex_count()));
+      for (std::size_t c = 0; c < in.indices.size(); ++c) {
+        const auto at = 2 * static_cast<std::size_t>(in.indices[c]);
+        value[static_cast<std::size_t>(mesh.face_indices[c])] = {in.values[at], in.values[at + 1], 0.0};
+      }
+      Split s;
+      s.map = split_topology(mesh, t, rule, s.child, {}, level);
+      std::vector<Vec3> expected(static_cast<std::size_t>(s.map.child_vertex_count));
+      for (Index i = 0; i < s.map.edge_points; ++i) {
+        const Index f = s.map.point_face(i);
+        for (const Index v : mesh.face(f)) expected[static_cast<std::size_t>(i)] += (1.0 / t.face_size(f)) * value[v];
+      }
+      for (std::size_t r = 0; r < s.map.boundary_edges.size(); ++r) {
+        const auto [a, b] = t.edge_vertices(s.map.boundary_edges[r]);
+        expected[static_cast<std::size_t>(s.map.edge_points) + 2 * r] = (2.0 / 3.0) * value[a] + (1.0 / 3.0) * value[b];
+        expected[static_cast<std::size_t>(s.map.edge_points) + 2 * r + 1] = (1.0 / 3.0) * value[a] + (2.0 / 3.0) * value[b];
+      }
+      for (Index v = 0; v < mesh.vertex_count(); ++v) expected[static_cast<std::size_t>(s.map.vertex_point(v))] = value[v];
+      EXPECT_EQ(s.map.boundary_edges.empty(), rule == SplitRule::sqrt2 || level == 0);
+      const FaceVaryingChannel& out = s.child.face_varying_channels.at(0);
+      ASSERT_EQ(out.indices, s.child.face_indices);
+      for (std::size_t i = 0; i < expected.size(); ++i) {
+        EXPECT_NEAR(out.values[2 * i], expected[i].x, 1e-14) << to_string(rule) << " level " << level << " vertex " << i;
+        EXPECT_NEAR(out.values[2 * i + 1], expected[i].y, 1e-14) << to_string(rule) << " level " << level << " vertex " << i;
+      }
+      mesh = std::move(s.child);
     }
   }
-  const PolygonMesh open = test::quad_grid(3, 2);
-  const MeshTopology t(open);
-  PolygonMesh child;
-  split_topology(open, t, SplitRule::sqrt2, child);
-  EXPECT_FALSE(MeshTopology::from_sqrt2_split(t, child).has_value());
 }
 
 }  // namespace
