@@ -108,7 +108,7 @@ TEST(InterpolatorySqrt3, RegularRuleReproducesCubics) {
 }
 
 // The scheme interpolates: every vertex keeps its position at every level;
-// stencil rows sum to one.
+// stencil rows sum to one; refinement commutes with affine maps.
 TEST(InterpolatorySqrt3, InterpolatesAndRowsSumToOne) {
   const PolygonMesh mesh = closed_triangles(3);
   PolygonMesh last;
@@ -119,8 +119,9 @@ TEST(InterpolatorySqrt3, InterpolatesAndRowsSumToOne) {
   const Index first_old = fast.vertex_count() - mesh.vertex_count();
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     EXPECT_EQ(norm(fast.positions[static_cast<std::size_t>(first_old + v)] - mesh.positions[v]), 0.0) << v;
-  for (std::size_t i = 0; i < fast.positions.size(); ++i) EXPECT_NEAR(norm(fast.positions[i] - last.positions[i]), 0.0, 1e-13);
+  test::expect_same_positions(fast, last, 1e-13);
   EXPECT_TRUE(validate(fast).ok());
+  test::expect_refinement_commutes_with_an_affine_map(mesh, interpolatory_sqrt3_scheme(), 3, 1e-12);
 }
 
 // The analysis over two steps: the extraordinary rule's Fourier design

@@ -1,12 +1,14 @@
 #pragma once
 // Checks shared by the scheme tests: every stencil row sums to one (affine
-// invariance), and the fast path gives what the recorded stencils give.
+// invariance), the fast path gives what the recorded stencils give, and
+// refinement commutes with an affine map.
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "subdiv/mesh/polygon_mesh.h"
+#include "subdiv/refine/refine.h"
 #include "subdiv/refine/stencil_table.h"
 #include "support/stencil_rows.h"
 
@@ -24,6 +26,21 @@ inline void expect_rows_sum_to_one(const std::vector<StencilTable>& tables, doub
 inline void expect_same_positions(const PolygonMesh& a, const PolygonMesh& b, double tolerance) {
   ASSERT_EQ(a.positions.size(), b.positions.size());
   for (std::size_t i = 0; i < a.positions.size(); ++i) EXPECT_NEAR(norm(a.positions[i] - b.positions[i]), 0.0, tolerance) << i;
+}
+
+/// Refining the image of `mesh` under a fixed shearing, scaling and
+/// translating map gives the image of its refinement.
+inline void expect_refinement_commutes_with_an_affine_map(const PolygonMesh& mesh, const Scheme& scheme, int levels,
+                                                          double tolerance) {
+  auto map = [](Vec3 p) { return Vec3{p.x - 2.0 * p.z + 1.0, 3.0 * p.y, p.x + p.y + p.z}; };
+  PolygonMesh moved = mesh;
+  for (Vec3& p : moved.positions) p = map(p);
+  RefineOptions options;
+  options.levels = levels;
+  const PolygonMesh a = refine(mesh, scheme, options), b = refine(moved, scheme, options);
+  ASSERT_EQ(a.positions.size(), b.positions.size());
+  for (std::size_t i = 0; i < a.positions.size(); ++i)
+    EXPECT_NEAR(norm(map(a.positions[i]) - b.positions[i]), 0.0, tolerance) << scheme.name << " vertex " << i;
 }
 
 }  // namespace subdiv::test
