@@ -96,6 +96,10 @@ Neighbourhood canonical_neighbourhood(SplitRule split, const LocalSubdivisionMat
   if (n.start == kInvalidIndex) throw InvalidInputError(m.configuration.name() + ": no face along the first ray");
   n.rule = compute_creasing(ring.mesh, t, boundary, method).vertex_rule;
   n.S = m.S;
+  // The parents of the image (one binary step halves the layout) are for
+  // match_neighbourhood's first-step check, which the sqrt3 and sqrt2
+  // splits do not take (see there).
+  if (!is_primal(split)) return n;
   auto at = [](Vec3 a, Vec3 b) { return norm(a - b) < 1e-9; };
   for (const Vec3& p : m.layout) {
     const Vec3 half = 0.5 * p;
@@ -223,7 +227,11 @@ struct GenericLevel {
   const std::vector<Vec3>& positions;
   const std::vector<char>& semi_sharp_vertex;
   const std::vector<double>& sector_angle;  ///< piecewise-smooth rules; else empty
-  bool quads;
+  bool quads;  ///< the split makes quads (quad, sqrt2), else triangles
+  /// Primal splits: compare the mesh's own first step with the matrix
+  /// (match_neighbourhood). The sqrt3 and sqrt2 splits match every vertex
+  /// of the neighbourhood instead.
+  bool primal;
   /// One step of the scheme from this level, as stencils (computed on first
   /// use): the match compares its rows with the matrix's.
   struct Step {
@@ -337,7 +345,7 @@ std::optional<std::vector<Index>> match_neighbourhood(const GenericLevel& g, con
     const Index w = image[static_cast<std::size_t>(u)];
     if (w == kInvalidIndex) return std::nullopt;
     ring.push_back(w);
-    if (!n.inner(u)) continue;
+    if (!n.inner(u) && g.primal) continue;
     const auto wi = static_cast<std::size_t>(w);
     const VertexRule rule = g.creasing.vertex_rule[wi];
     if (!t.ring_ordered(w) || g.semi_sharp_vertex[wi] || rule != n.rule[static_cast<std::size_t>(u)] ||
@@ -357,6 +365,13 @@ std::optional<std::vector<Index>> match_neighbourhood(const GenericLevel& g, con
   // piecewise-smooth rules the sectors of boundary ends). Later steps see
   // the neighbourhood's image, whose vertices of ring > 0 are new (edge and
   // face points, regular), in a region the checks above cover.
+  // The sqrt3 and sqrt2 splits' matrices span two steps and their images
+  // are not at half the layout, so there the check above covers every
+  // vertex of the neighbourhood, its ring included: their rules read the
+  // corners of a face and the one-ring of a vertex (interpolatory sqrt3's
+  // also whether the face's corners are regular), all within the matched
+  // faces and vertices, and have no sharp features.
+  if (!g.primal) return ring;
   const StencilTable& rows = g.step.rows();
   Eigen::VectorXd row(static_cast<Eigen::Index>(ring.size()));
   for (std::size_t a = 0; a < ring.size(); ++a) {
@@ -517,9 +532,10 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
     throw InvalidInputError("limit: refinement levels must be >= 0");
   if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no limit positions for composite schemes yet (refine and analyze cover them)");
   if (scheme.split == SplitRule::dual) return dual_limit_positions(mesh, scheme, options);
-  if (!is_primal(scheme.split))
+  const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
+  if (!is_primal(scheme.split) && !point_split)
     throw InvalidInputError(std::string(scheme.name) + ": no limit positions for the " + to_string(scheme.split) +
-                            ": only the dual split's limits (a V-face's centroid) are written so far");
+                            ": they are written for the primal, sqrt3, sqrt2 and dual splits");
   // The closed forms are those of the standard rules. Under the
   // piecewise-smooth rules the generic masks of the modified matrices apply,
   // after at least one step: a vertex next to an extraordinary sharp vertex
@@ -527,25 +543,46 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   // does not describe; its vertex point one level down has none.
   const bool piecewise = options.refine.boundary_rules == BoundaryRules::piecewise_smooth;
   const bool closed_form = options.route == LimitRoute::closed_form && scheme.limit_masks != nullptr && !piecewise;
-  const int levels = closed_form ? levels_to_resolve(mesh, scheme, options.max_resolve_levels)
-                     : piecewise ? std::max(1, options.isolation_levels)
-                                 : options.isolation_levels;
+  int levels = closed_form ? levels_to_resolve(mesh, scheme, options.max_resolve_levels)
+               : piecewise ? std::max(1, options.isolation_levels)
+                           : options.isolation_levels;
+  // Arity sqrt 2: two steps make a binary level, and the isolation counts
+  // those (extraordinary vertices as far apart as after binary levels).
+  if (scheme.split == SplitRule::sqrt2) levels *= 2;
+  // The analysis's two-step sqrt3 matrix starts with a step that does not
+  // trisect the boundary: so must the masks' level.
+  if (scheme.split == SplitRule::sqrt3) levels += levels % 2;
   RefineOptions check = options.refine;
   check.levels = levels;
   check_refinable(mesh, scheme, check);
 
-  // Each input vertex is followed through the levels: the vertex point of
-  // v is child F + E + v (quad split) or E + v (triangle split).
+  // Each input vertex is followed through the levels: every split numbers
+  // the vertex points last, so the vertex point of v is child
+  // (child vertices - parent vertices) + v.
   std::vector<Index> where(static_cast<std::size_t>(mesh.vertex_count()));
   std::iota(where.begin(), where.end(), 0);
   PolygonMesh current = mesh;
   RefineOptions one = options.refine;
   one.levels = 1;
-  for (int l = 0; l < levels; ++l) {
-    const MeshTopology t(current);
-    const Index offset = (scheme.split == SplitRule::quad ? t.face_count() : 0) + t.edge_count();
-    for (Index& w : where) w += offset;
-    current = refine(current, scheme, one);
+  auto follow = [&](Index parent_vertices, Index child_vertices) {
+    for (Index& w : where) w += child_vertices - parent_vertices;
+  };
+  if (point_split) {
+    // In one run, so that sqrt3's steps alternate at the boundary.
+    RefineOptions all = options.refine;
+    all.levels = levels;
+    Index before = current.vertex_count();
+    all.on_level = [&](int, const PolygonMesh& child) {
+      follow(before, child.vertex_count());
+      before = child.vertex_count();
+    };
+    current = refine(current, scheme, all);
+  } else {
+    for (int l = 0; l < levels; ++l) {
+      PolygonMesh child = refine(current, scheme, one);
+      follow(current.vertex_count(), child.vertex_count());
+      current = std::move(child);
+    }
   }
 
   const MeshTopology t(current);
@@ -556,13 +593,14 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   for (const CornerTag& c : current.tags.corners)
     if (c.sharpness > 0.0 && c.sharpness < kInfiniteSharpness) semi_sharp_vertex[static_cast<std::size_t>(c.vertex)] = 1;
   const detail::LimitLevel level{t, creasing, current.positions, semi_sharp_vertex};
-  const bool quads = scheme.split == SplitRule::quad;
+  const bool quads = scheme.split == SplitRule::quad || scheme.split == SplitRule::sqrt2;
   const std::vector<double> sector_angle =
       piecewise ? detail::sector_angles(current, t, creasing) : std::vector<double>{};
   RefineOptions step_options = one;
   step_options.on_level = nullptr;
   GenericLevel::Step step{current, scheme, step_options, std::nullopt};
-  const GenericLevel generic{t, creasing, current.positions, semi_sharp_vertex, sector_angle, quads, step};
+  const GenericLevel generic{t, creasing, current.positions, semi_sharp_vertex, sector_angle, quads, !point_split,
+                             step};
   MaskCache cache(scheme, options.refine, boundary, method);
   LimitMasks scratch;
 

@@ -137,6 +137,8 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, int l
     sector_angle = detail::sector_angles(parent, topology, creasing);
   Level level;
   level.map = split_topology(parent, topology, scheme.split, level.child, creasing.child_edge_sharpness, l);
+  if (scheme.split == SplitRule::sqrt3 && boundary == BoundaryInterpolation::edge_and_corner)
+    sqrt3_keep_one_face_corners(topology, level.map, level.child.tags);
   if (level.child.tags.crease_method != method) {  // overridden: the child's tags say how they were made
     level.child.tags.crease_method = method;
     level.child.tags.crease_method_set = true;

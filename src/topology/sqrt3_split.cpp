@@ -29,6 +29,7 @@
 // order, two for an interior edge (at the end its side runs from, then the
 // other), one for a boundary edge. Every face keeps the parent's orientation.
 
+#include <algorithm>
 #include <atomic>
 
 #include <tbb/parallel_for.h>
@@ -40,6 +41,17 @@
 namespace subdiv {
 
 bool sqrt3_step_trisects(int level) { return level % 2 == 1; }
+
+void sqrt3_keep_one_face_corners(const MeshTopology& parent, const SplitMap& map, Tags& child_tags) {
+  for (Index v = 0; v < parent.vertex_count(); ++v) {
+    if (parent.vertex_kind(v) != VertexKind::boundary || parent.vertex_face_count(v) != 1) continue;
+    const Index child = map.vertex_point(v);
+    const bool tagged = std::any_of(child_tags.corners.begin(), child_tags.corners.end(), [&](const CornerTag& c) {
+      return c.vertex == child && c.sharpness >= kInfiniteSharpness;
+    });
+    if (!tagged) child_tags.corners.push_back({child, kInfiniteSharpness, CornerType::unspecified, std::nullopt});
+  }
+}
 
 }  // namespace subdiv
 

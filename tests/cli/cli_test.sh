@@ -117,6 +117,14 @@ run refine-doo-sabin-crease 1 refine "$work/ds_crease.obj" -s doo-sabin -o "$wor
 stderr_one_line refine-doo-sabin-crease && stderr_has refine-doo-sabin-crease "ds_crease.obj:6: doo-sabin has no crease rules"
 run limit-doo-sabin 0 limit "$meshes/cube.obj" -s doo-sabin -o "$work/ds_limit.obj" &&
   stdout_has limit-doo-sabin "8 vertices at their doo-sabin limit positions (generic masks)"
+# The sqrt3 and sqrt2 splits' limits: generic masks; midedge has none (one line).
+run limit-sqrt3 0 limit "$meshes/l_shape.obj" -s sqrt3 --triangulate --normals -o "$work/s3_limit.obj" &&
+  stdout_has limit-sqrt3 "21 vertices at their sqrt3 limit positions (generic masks), with limit normals"
+run limit-four-eight 0 limit "$meshes/cube.obj" -s four-eight -o "$work/48_limit.obj" &&
+  stdout_has limit-four-eight "8 vertices at their four-eight limit positions (generic masks)"
+[ ! -s "$work/err" ] && pass || fail "limit four-eight: unexpected warnings: $(cat "$work/err")"
+run limit-midedge 1 limit "$meshes/cube.obj" -s midedge -o "$work/x.obj" && stderr_one_line limit-midedge &&
+  stderr_has limit-midedge "no limit positions for the midedge split"
 run analyze-doo-sabin 0 analyze -s doo-sabin -k 3..8 && stdout_has analyze-doo-sabin "extraordinary face of k sides"
 for k in 3 5 8; do
   grep -qE "^interior k=$k +$((4 * k)) +1 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass ||

@@ -12,6 +12,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/validation.h"
 #include "subdiv/refine/refine.h"
+#include "subdiv/rules/interpolatory_sqrt3.h"
 #include "support/bsplines.h"
 #include "support/refine_options.h"
 #include "support/stencil_checks.h"
@@ -292,6 +293,41 @@ TEST(Sqrt3, CornersStayAndEndTheBoundaryCurves) {
     const auto row = test::merged_row(tables[1], t.other_vertex(e, corner));
     ASSERT_EQ(row.size(), 2u);  // 2/3 on the corner, 1/3 on the edge's other end
     for (const auto& [v, w] : row) EXPECT_TRUE(std::fabs(w - 2.0 / 3.0) < 1e-15 || std::fabs(w - 1.0 / 3.0) < 1e-15) << w;
+  }
+}
+
+// Under edge-and-corner interpolation a boundary vertex with one face is a
+// corner. The sqrt3 split gives it a second face on every other step; it
+// stays a corner (sqrt3_keep_one_face_corners) and so in place, for sqrt3 and
+// interpolatory sqrt3 alike. Under edge-only interpolation it is a boundary
+// vertex and moves along the boundary curve.
+TEST(Sqrt3, OneFaceBoundaryVerticesStayCornersUnderEdgeAndCorner) {
+  PolygonMesh grid = jittered(test::triangle_grid(4, 3), 3);
+  const MeshTopology t(grid);
+  std::vector<Index> one_face;
+  for (Index v = 0; v < grid.vertex_count(); ++v)
+    if (t.vertex_kind(v) == VertexKind::boundary && t.vertex_face_count(v) == 1) one_face.push_back(v);
+  ASSERT_EQ(one_face.size(), 2u);  // two of the grid's four corners have one triangle
+  for (const Scheme* scheme : {&sqrt3_scheme(), &interpolatory_sqrt3_scheme()}) {
+    for (const BoundaryInterpolation b : {BoundaryInterpolation::edge_and_corner, BoundaryInterpolation::edge_only}) {
+      RefineOptions o = levels(4);
+      o.boundary = b;
+      std::vector<PolygonMesh> meshes;
+      o.on_level = [&](int, const PolygonMesh& m) { meshes.push_back(m); };
+      const PolygonMesh fine = refine(grid, *scheme, o);
+      Index offset = 0;  // vertex points come last
+      for (std::size_t l = 0; l < meshes.size(); ++l) {
+        offset += meshes[l].vertex_count() - (l == 0 ? grid.vertex_count() : meshes[l - 1].vertex_count());
+        for (const Index v : one_face) {
+          const double moved = norm(meshes[l].positions[static_cast<std::size_t>(offset + v)] - grid.positions[v]);
+          if (b == BoundaryInterpolation::edge_and_corner || scheme == &interpolatory_sqrt3_scheme()) {
+            EXPECT_EQ(moved, 0.0) << scheme->name << " level " << l + 1 << " vertex " << v;
+          } else if (l + 1 == meshes.size()) {
+            EXPECT_GT(moved, 1e-3) << scheme->name << " edge-only, vertex " << v;
+          }
+        }
+      }
+    }
   }
 }
 

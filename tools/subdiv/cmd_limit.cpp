@@ -78,8 +78,8 @@ int run_limit(const LimitCommandOptions& opt) {
   if (limit.approximated > 0)
     std::fprintf(stderr,
                  "subdiv: warning: %d vertices match no canonical configuration (darts, non-manifold or unresolved "
-                 "semi-sharp features, another extraordinary vertex within the masks' neighbourhood): written "
-                 "at their position after %d levels, not at the limit\n",
+                 "semi-sharp features, another extraordinary vertex within the masks' neighbourhood, which more "
+                 "--isolation-levels separate): written at their position after %d levels, not at the limit\n",
                  limit.approximated, limit.levels_refined);
   if (opt.normals) {
     const auto undefined = std::count_if(limit.normals.begin(), limit.normals.end(),

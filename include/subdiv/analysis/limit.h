@@ -23,7 +23,10 @@
 //   split's kind around a smooth interior vertex, a boundary vertex, or a
 //   corner, the inner vertices' valences and rules the configuration's, and
 //   the mesh's own first step there equal to the matrix (so another
-//   extraordinary vertex whose rules reach the neighbourhood fails it). A vertex on an interior crease
+//   extraordinary vertex whose rules reach the neighbourhood fails it; the
+//   sqrt3 and sqrt2 splits, whose matrices span two steps, match the
+//   valences and rules of every vertex of the neighbourhood instead, which
+//   fixes their one-ring rules there). A vertex on an interior crease
 //   takes the masks of one of its sectors (the first with two or more
 //   faces) as a boundary configuration with that sector's faces: each
 //   sector evolves as a boundary fan, the crease and boundary rules being
@@ -57,7 +60,10 @@ enum class LimitRoute : std::uint8_t {
 
 struct LimitOptions {
   LimitRoute route = LimitRoute::closed_form;
-  /// Generic route: refinement steps before the masks apply.
+  /// Generic route: refinement steps before the masks apply. The sqrt2
+  /// split (arity sqrt 2) takes twice as many steps, two per binary level;
+  /// the sqrt3 split an even number, the analysis's two-step matrix
+  /// starting with a step that does not trisect the boundary.
   int isolation_levels = 2;
   /// Closed-form route: most refinement steps taken to resolve faces and
   /// semi-sharp features.
@@ -87,7 +93,7 @@ struct LimitResult {
 
 /// Limit positions (and normals) of every vertex of `mesh` under `scheme`.
 /// Throws as refine() does for meshes it cannot refine, and
-/// InvalidInputError for the dual and midedge splits.
+/// InvalidInputError for the midedge split and composite schemes.
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options = {});
 
 }  // namespace subdiv

@@ -118,4 +118,11 @@ std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, 
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
                         PolygonMesh& child, std::span<const double> child_end_sharpness = {}, int level = 0);
 
+/// The sqrt3 split's boundary faces change with the steps: a boundary
+/// vertex with one face, a corner under edge-and-corner interpolation, has
+/// two after the next step. For that interpolation, tags the vertex point of
+/// each such parent vertex in `child_tags` as an infinitely sharp corner, so
+/// that it stays one (the engine calls it after the split).
+void sqrt3_keep_one_face_corners(const MeshTopology& parent, const SplitMap& map, Tags& child_tags);
+
 }  // namespace subdiv
