@@ -244,7 +244,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   if (scheme.split == SplitRule::dual) return dual_depth_bound(mesh, scheme, options);
   if (!is_primal(scheme.split))
     throw InvalidInputError(std::string(scheme.name) + ": no depth bound for the " + to_string(scheme.split) +
-                            ": it needs limit positions, which it does not have yet");
+                            " yet: the bounds are written for the quad, triangle and dual splits");
   if (interpolates_with_wide_masks(scheme, options))
     throw InvalidInputError(std::string(scheme.name) +
                             ": no depth bound for an interpolating scheme: every vertex stays on the limit "
