@@ -69,6 +69,12 @@ std::vector<Case> cases() {
   return out;
 }
 
+LimitResult limit_of(const Case& c) {
+  LimitOptions options;
+  options.isolation_levels = c.isolation_levels;
+  return limit_positions(c.mesh, *c.scheme, options);
+}
+
 // Measured (printed): per two steps the distance shrinks by 0.085 (sqrt3
 // cube), 0.11 (sqrt3 L, open, a concave corner), 0.25 (four-eight), to
 // 1.3e-5, 6.4e-6, 4.7e-5 and 4.8e-5 of the mesh's size; the worst normal
@@ -76,9 +82,7 @@ std::vector<Case> cases() {
 TEST(PointSplitLimit, PositionsAndNormalsAgreeWithDeepRefinement) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
-    LimitOptions options;
-    options.isolation_levels = c.isolation_levels;
-    const LimitResult r = limit_positions(c.mesh, *c.scheme, options);
+    const LimitResult r = limit_of(c);
     EXPECT_EQ(r.approximated, 0);
     ASSERT_EQ(r.positions.size(), static_cast<std::size_t>(c.mesh.vertex_count()));
     const double size = size_of(c.mesh);
@@ -115,9 +119,7 @@ TEST(PointSplitLimit, PositionsAndNormalsAgreeWithDeepRefinement) {
 TEST(PointSplitLimit, NormalsAreUnitAtInteriorVertices) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.name);
-    LimitOptions options;
-    options.isolation_levels = c.isolation_levels;
-    const LimitResult r = limit_positions(c.mesh, *c.scheme, options);
+    const LimitResult r = limit_of(c);
     const MeshTopology t(c.mesh);
     for (Index v = 0; v < c.mesh.vertex_count(); ++v) {
       if (t.vertex_kind(v) != VertexKind::interior) continue;
