@@ -43,6 +43,7 @@ namespace subdiv {
 bool sqrt3_step_trisects(int level) { return level % 2 == 1; }
 
 void sqrt3_keep_one_face_corners(const MeshTopology& parent, const SplitMap& map, Tags& child_tags) {
+  if (parent.boundary_loops().empty()) return;
   for (Index v = 0; v < parent.vertex_count(); ++v) {
     if (parent.vertex_kind(v) != VertexKind::boundary || parent.vertex_face_count(v) != 1) continue;
     const Index child = map.vertex_point(v);
