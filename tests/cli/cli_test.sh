@@ -125,6 +125,11 @@ run limit-four-eight 0 limit "$meshes/cube.obj" -s four-eight -o "$work/48_limit
 [ ! -s "$work/err" ] && pass || fail "limit four-eight: unexpected warnings: $(cat "$work/err")"
 run limit-midedge 1 limit "$meshes/cube.obj" -s midedge -o "$work/x.obj" && stderr_one_line limit-midedge &&
   stderr_has limit-midedge "no limit positions for the midedge split"
+# limit names the file and line of what it cannot refine, as refine does.
+run limit-nonmanifold 1 limit "$data/nonmanifold_edge.obj" -o "$work/x.obj" && stderr_one_line limit-nonmanifold &&
+  stderr_has limit-nonmanifold "nonmanifold_edge.obj:9: edge 0-1 is shared by 3 faces"
+run limit-quads-for-loop 1 limit "$meshes/cube.obj" -s loop -o "$work/x.obj" && stderr_one_line limit-quads-for-loop &&
+  stderr_has limit-quads-for-loop "cube.obj:11: loop needs a triangle mesh"
 run analyze-doo-sabin 0 analyze -s doo-sabin -k 3..8 && stdout_has analyze-doo-sabin "extraordinary face of k sides"
 for k in 3 5 8; do
   grep -qE "^interior k=$k +$((4 * k)) +1 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass ||

@@ -42,7 +42,11 @@ int run_limit(const LimitCommandOptions& opt) {
   check_output_path(opt.input, opt.output);
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
-  if (opt.triangulate && scheme->needs_triangles) file.mesh = triangulate(file.mesh);
+  if (opt.triangulate && scheme->needs_triangles) {
+    file.mesh = triangulate(file.mesh);
+    file.lines.face_lines.clear();  // faces and holes were renumbered
+    file.lines.hole_lines.clear();
+  }
 
   LimitOptions options;
   apply_rule_options(opt.rules, file.mesh, options.refine);
@@ -55,13 +59,14 @@ int run_limit(const LimitCommandOptions& opt) {
   if (opt.crease_method == "uniform") options.refine.crease_method = CreaseMethod::uniform;
   else if (opt.crease_method == "chaikin") options.refine.crease_method = CreaseMethod::chaikin;
 
+  // What the input cannot be refined for is said with its file and line,
+  // as refine says it.
+  RefineOptions refine_options = options.refine;
+  refine_options.levels = opt.levels;
+  check_refinable(file.mesh, *scheme, refine_options, &file.lines);
   // The mesh whose vertices are written: the input, or its refinement.
   PolygonMesh out = std::move(file.mesh);
-  if (opt.levels > 0) {
-    RefineOptions refine_options = options.refine;
-    refine_options.levels = opt.levels;
-    out = refine(out, *scheme, refine_options);
-  }
+  if (opt.levels > 0) out = refine(out, *scheme, refine_options);
   const LimitResult limit = limit_positions(out, *scheme, options);
   out.positions = limit.positions;
   if (opt.normals) {
