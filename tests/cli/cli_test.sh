@@ -130,6 +130,10 @@ run limit-nonmanifold 1 limit "$data/nonmanifold_edge.obj" -o "$work/x.obj" && s
   stderr_has limit-nonmanifold "nonmanifold_edge.obj:9: edge 0-1 is shared by 3 faces"
 run limit-quads-for-loop 1 limit "$meshes/cube.obj" -s loop -o "$work/x.obj" && stderr_one_line limit-quads-for-loop &&
   stderr_has limit-quads-for-loop "cube.obj:11: loop needs a triangle mesh"
+run depth-nonmanifold 1 depth "$data/nonmanifold_edge.obj" -s catmull-clark --eps 0.01 &&
+  stderr_one_line depth-nonmanifold && stderr_has depth-nonmanifold "nonmanifold_edge.obj:9: edge 0-1 is shared by 3 faces"
+run adaptive-quads-for-loop 1 adaptive "$meshes/cube.obj" -s loop --eps 0.01 -o "$work/x.obj" &&
+  stderr_one_line adaptive-quads-for-loop && stderr_has adaptive-quads-for-loop "cube.obj:11: loop needs a triangle mesh"
 run analyze-doo-sabin 0 analyze -s doo-sabin -k 3..8 && stdout_has analyze-doo-sabin "extraordinary face of k sides"
 for k in 3 5 8; do
   grep -qE "^interior k=$k +$((4 * k)) +1 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass ||

@@ -8,12 +8,13 @@
 #include <string>
 
 #include "commands.h"
+#include "input_mesh.h"
 #include "output_checks.h"
 #include "scheme_option.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/adaptive.h"
 #include "subdiv/io/mesh_io.h"
-#include "subdiv/mesh/triangulate.h"
+#include "subdiv/refine/refine.h"
 
 namespace subdiv::cli {
 
@@ -35,11 +36,12 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
   check_output_path(opt.input, opt.output);
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
-  if (opt.triangulate && scheme.needs_triangles) file.mesh = triangulate(file.mesh);
+  triangulate_if_asked(scheme, opt.triangulate, file);
 
   AdaptiveOptions options;
   options.max_level = opt.max_level;
   options.depth.refine.allow_non_manifold = opt.allow_non_manifold;
+  check_refinable(file.mesh, scheme, options.depth.refine, &file.lines);  // errors with the file's lines
   const AdaptiveResult result = adaptive_refine(file.mesh, scheme, opt.eps, options);
 
   WriteOptions wopt;

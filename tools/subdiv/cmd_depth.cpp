@@ -10,11 +10,12 @@
 #include <string>
 
 #include "commands.h"
+#include "input_mesh.h"
 #include "scheme_option.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/depth.h"
 #include "subdiv/io/mesh_io.h"
-#include "subdiv/mesh/triangulate.h"
+#include "subdiv/refine/refine.h"
 #include "output_checks.h"
 
 namespace subdiv::cli {
@@ -60,10 +61,11 @@ int run_depth(const DepthCommandOptions& opt) {
   const Scheme& scheme = scheme_named(opt.scheme);
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
-  if (opt.triangulate && scheme.needs_triangles) file.mesh = triangulate(file.mesh);
+  triangulate_if_asked(scheme, opt.triangulate, file);
 
   DepthOptions options;
   options.refine.allow_non_manifold = opt.allow_non_manifold;
+  check_refinable(file.mesh, scheme, options.refine, &file.lines);  // errors with the file's lines
   const DepthBound bound = depth_bound(file.mesh, scheme, options);
   const int depth = bound.depth_for(opt.eps);
 

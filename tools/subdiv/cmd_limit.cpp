@@ -8,13 +8,13 @@
 #include <memory>
 
 #include "commands.h"
+#include "input_mesh.h"
 #include "output_checks.h"
 #include "rule_options.h"
 #include "scheme_option.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
-#include "subdiv/mesh/triangulate.h"
 #include "subdiv/refine/refine.h"
 
 namespace subdiv::cli {
@@ -42,11 +42,7 @@ int run_limit(const LimitCommandOptions& opt) {
   check_output_path(opt.input, opt.output);
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
-  if (opt.triangulate && scheme->needs_triangles) {
-    file.mesh = triangulate(file.mesh);
-    file.lines.face_lines.clear();  // faces and holes were renumbered
-    file.lines.hole_lines.clear();
-  }
+  triangulate_if_asked(*scheme, opt.triangulate, file);
 
   LimitOptions options;
   apply_rule_options(opt.rules, file.mesh, options.refine);

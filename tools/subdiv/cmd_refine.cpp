@@ -13,13 +13,13 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "input_mesh.h"
+#include "output_checks.h"
 #include "rule_options.h"
 #include "scheme_option.h"
-#include "output_checks.h"
 #include "subdiv/core/error.h"
 #include "subdiv/curves/curve_scheme.h"
 #include "subdiv/io/mesh_io.h"
-#include "subdiv/mesh/triangulate.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/scheme.h"
 
@@ -174,11 +174,7 @@ int run_refine(const RefineCommandOptions& opt) {
     std::fprintf(stderr, "subdiv: warning: %s: %zu polylines are not refined by a surface scheme: not written\n",
                  opt.input.c_str(), file.mesh.polylines.size());
   }
-  if (opt.triangulate && scheme->needs_triangles) {
-    file.mesh = triangulate(file.mesh);
-    file.lines.face_lines.clear();  // faces and holes were renumbered
-    file.lines.hole_lines.clear();
-  }
+  triangulate_if_asked(*scheme, opt.triangulate, file);
   if (!file.mesh.tags.other.empty())
     std::fprintf(stderr, "subdiv: warning: %s: %zu tags not interpreted (e.g. '%s'), carried through unchanged\n",
                  opt.input.c_str(), file.mesh.tags.other.size(), file.mesh.tags.other.front().name.c_str());
