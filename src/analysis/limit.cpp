@@ -122,15 +122,16 @@ Neighbourhood canonical_neighbourhood(SplitRule split, const LocalSubdivisionMat
   return n;
 }
 
-// At a corner the two boundary curves give the eigenvalue 1/2 twice, their
+// At a corner the two boundary curves give their tangent eigenvalue twice
+// (`curve`: 1/2 for the binary splits, 1/3 for sqrt3's two steps), their
 // tangents the left eigenvectors. The basis along the curves: the first
 // mask has no weight on the last ring vertex (the second boundary
 // neighbour), the second none on the first; each weighs its own boundary
 // neighbour 1.
-std::optional<std::array<Eigen::VectorXd, 2>> corner_tangent_masks(const Eigen::MatrixXd& S) {
+std::optional<std::array<Eigen::VectorXd, 2>> corner_tangent_masks(const Eigen::MatrixXd& S, double curve) {
   const Eigen::Index n = S.rows();
   if (n < 3) return std::nullopt;
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(S.transpose() - 0.5 * Eigen::MatrixXd::Identity(n, n));
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(S.transpose() - curve * Eigen::MatrixXd::Identity(n, n));
   lu.setThreshold(1e-10);
   const Eigen::MatrixXd K = lu.kernel();
   if (K.cols() != 2) return std::nullopt;
@@ -187,12 +188,14 @@ class MaskCache {
     if (a.matrix.invariant && a.limit_mask)
       masks.neighbourhood = canonical_neighbourhood(scheme_.split, a.matrix, boundary_, method_);
     if (canonical.kind == Configuration::Kind::corner && a.matrix.invariant) {
-      // The pair 1/2 spans the tangent plane when it is subdominant:
-      // lambda_1 = lambda_2 = 1/2 > |lambda_3|.
-      masks.tangents = corner_tangent_masks(a.matrix.S);
+      // The curves' pair spans the tangent plane when it is subdominant:
+      // lambda_1 = lambda_2 = c > |lambda_3|, c = 1/2 per binary step, the
+      // analysis step's (arity^-period: 1/3 over sqrt3's two steps).
+      const double curve = std::pow(arity(scheme_.split), -scheme_.period);
+      masks.tangents = corner_tangent_masks(a.matrix.S, curve);
       const auto& l = a.leading;
-      masks.normal = masks.tangents && l.size() >= 4 && same(l[1].real(), 0.5) && same(l[2].real(), 0.5) &&
-                     same(l[1].imag(), 0.0) && same(l[2].imag(), 0.0) && std::abs(l[3]) < 0.5 - 1e-9;
+      masks.normal = masks.tangents && l.size() >= 4 && same(l[1].real(), curve) && same(l[2].real(), curve) &&
+                     same(l[1].imag(), 0.0) && same(l[2].imag(), 0.0) && std::abs(l[3]) < curve - 1e-9;
     }
     return cache_.emplace(key, std::move(masks)).first->second;
   }
