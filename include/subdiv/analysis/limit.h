@@ -33,7 +33,8 @@
 //   the same curve rules. The position reads the curve only; the normal is
 //   that sector's. An infinitely sharp corner keeps its position; its
 //   tangents are the left eigenvectors of the eigenvalue 1/2 (the two
-//   boundary curves) of the corner configuration with its (first) sector's
+//   boundary curves; 1/3 over sqrt3's two steps) of the corner
+//   configuration with its (first) sector's
 //   faces, and under the piecewise-smooth rules its sector angle (the
 //   cache is keyed on it); its normal is defined where that pair 1/2 is
 //   subdominant (lambda_1 = lambda_2 = 1/2 > |lambda_3|: convex corners,
