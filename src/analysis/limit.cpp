@@ -189,7 +189,7 @@ class MaskCache {
       masks.neighbourhood = canonical_neighbourhood(scheme_.split, a.matrix, boundary_, method_);
     if (canonical.kind == Configuration::Kind::corner && a.matrix.invariant) {
       // The curves' pair spans the tangent plane when it is subdominant:
-      // lambda_1 = lambda_2 = c > |lambda_3|, c = 1/2 per binary step, the
+      // lambda_1 = lambda_2 = curve > |lambda_3|: 1/2 per binary step, the
       // analysis step's (arity^-period: 1/3 over sqrt3's two steps).
       const double curve = std::pow(arity(scheme_.split), -scheme_.period);
       masks.tangents = corner_tangent_masks(a.matrix.S, curve);
