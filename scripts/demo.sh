@@ -41,8 +41,7 @@ done
 "$subdiv" refine data/meshes/l_shape.obj -s interpolatory-sqrt3 --triangulate -l 4 -o out/l_shape_interpolatory-sqrt34.obj
 # Limits of the arity sqrt 3 and sqrt 2 schemes (eigenvector masks of their two-step matrices).
 "$subdiv" limit data/meshes/l_shape.obj -s sqrt3 --triangulate --normals -o out/l_shape_sqrt3_limit.obj
-"$subdiv" limit data/meshes/spot_control_mesh.obj -s four-eight --isolation-levels 3 --normals \
-  -o out/spot_control_mesh_four-eight_limit.obj
+"$subdiv" limit data/meshes/spot_control_mesh.obj -s four-eight --normals -o out/spot_control_mesh_four-eight_limit.obj
 for scheme in loop catmull-clark butterfly modified-butterfly doo-sabin; do
   echo "== subdiv analyze -s $scheme -k 3..8"
   "$subdiv" analyze -s "$scheme" -k 3..8 --plot-spectrum "out/${scheme}_spectrum.svg" \

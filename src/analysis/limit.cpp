@@ -232,8 +232,8 @@ struct GenericLevel {
   const std::vector<double>& sector_angle;  ///< piecewise-smooth rules; else empty
   bool quads;  ///< the split makes quads (quad, sqrt2), else triangles
   /// Primal splits: compare the mesh's own first step with the matrix
-  /// (match_neighbourhood). The sqrt3 and sqrt2 splits match every vertex
-  /// of the neighbourhood instead.
+  /// (match_neighbourhood). The sqrt3 and sqrt2 splits' matrices span two
+  /// steps; their rules read nothing the topology match does not fix.
   bool primal;
   /// One step of the scheme from this level, as stencils (computed on first
   /// use): the match compares its rows with the matrix's.
@@ -348,7 +348,7 @@ std::optional<std::vector<Index>> match_neighbourhood(const GenericLevel& g, con
     const Index w = image[static_cast<std::size_t>(u)];
     if (w == kInvalidIndex) return std::nullopt;
     ring.push_back(w);
-    if (!n.inner(u) && g.primal) continue;
+    if (!n.inner(u)) continue;
     const auto wi = static_cast<std::size_t>(w);
     const VertexRule rule = g.creasing.vertex_rule[wi];
     if (!t.ring_ordered(w) || g.semi_sharp_vertex[wi] || rule != n.rule[static_cast<std::size_t>(u)] ||
@@ -369,11 +369,13 @@ std::optional<std::vector<Index>> match_neighbourhood(const GenericLevel& g, con
   // the neighbourhood's image, whose vertices of ring > 0 are new (edge and
   // face points, regular), in a region the checks above cover.
   // The sqrt3 and sqrt2 splits' matrices span two steps and their images
-  // are not at half the layout, so there the check above covers every
-  // vertex of the neighbourhood, its ring included: their rules read the
-  // corners of a face and the one-ring of a vertex (interpolatory sqrt3's
-  // also whether the face's corners are regular), all within the matched
-  // faces and vertices, and have no sharp features.
+  // are not at half the layout, so this check is not made there, and need
+  // not be: their rules read a face's corners, a vertex's one-ring and its
+  // own valence (interpolatory sqrt3's face rule also its corners'), so an
+  // image row of the invariant neighbourhood reads only the matched faces
+  // and the inner vertices' valences and rules; they have no sharp
+  // features. (Tested: the limits at 2 isolation levels, with extraordinary
+  // vertices in every neighbourhood's outer ring, equal those at 3 or 4.)
   if (!g.primal) return ring;
   const StencilTable& rows = g.step.rows();
   Eigen::VectorXd row(static_cast<Eigen::Index>(ring.size()));

@@ -24,9 +24,9 @@
 //   corner, the inner vertices' valences and rules the configuration's, and
 //   the mesh's own first step there equal to the matrix (so another
 //   extraordinary vertex whose rules reach the neighbourhood fails it; the
-//   sqrt3 and sqrt2 splits, whose matrices span two steps, match the
-//   valences and rules of every vertex of the neighbourhood instead, which
-//   fixes their one-ring rules there). A vertex on an interior crease
+//   sqrt3 and sqrt2 splits' matrices span two steps, and their rules read
+//   nothing the topology does not fix there, so they match the topology
+//   alone). A vertex on an interior crease
 //   takes the masks of one of its sectors (the first with two or more
 //   faces) as a boundary configuration with that sector's faces: each
 //   sector evolves as a boundary fan, the crease and boundary rules being
