@@ -173,10 +173,7 @@ std::vector<Vec3> chaikin(const std::vector<Vec3>& polygon) {
 // polygon, level after level, so the boundary limit is its quadratic
 // B-spline; the interior does not reach it.
 TEST(DooSabin, BoundaryIsChaikinsCurve) {
-  PolygonMesh mesh = test::quad_grid(3, 3);
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> height(-1.0, 1.0);
-  for (Vec3& p : mesh.positions) p.z = height(random);
+  const PolygonMesh mesh = test::with_random_heights(test::quad_grid(3, 3), 3);
   std::vector<Vec3> expected;
   const MeshTopology coarse(mesh);
   for (const Index v : coarse.boundary_loops().at(0).vertices) expected.push_back(mesh.positions[v]);

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <map>
-#include <random>
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/ring_mesh.h"
@@ -89,10 +88,7 @@ TEST(FourEight, WeightsGolden) {
 // computed from the symbol.
 TEST(FourEight, TwoStepsOnARegularGridAreTheC4BoxSpline) {
   const int n = 14;
-  PolygonMesh grid = test::quad_grid(n, n);
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> height(-1.0, 1.0);
-  for (Vec3& p : grid.positions) p.z = height(random);
+  const PolygonMesh grid = test::with_random_heights(test::quad_grid(n, n), 3);
   const PolygonMesh twice = refine(grid, open_four_eight(), levels(2));
   const auto mask = box_spline_mask();
   double sum = 0.0;
@@ -119,15 +115,8 @@ TEST(FourEight, TwoStepsOnARegularGridAreTheC4BoxSpline) {
 // Stencil rows sum to one, the fast path agrees with the stencils, and
 // refinement commutes with affine maps.
 TEST(FourEight, RowsSumToOneAndAffineInvariance) {
-  PolygonMesh mesh = test::cube();
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  for (Vec3& p : mesh.positions) p += Vec3{jitter(random), jitter(random), jitter(random)};
-  PolygonMesh last;
-  const std::vector<StencilTable> tables = refine_stencils(mesh, four_eight_scheme(), levels(3), &last);
-  test::expect_rows_sum_to_one(tables, 1e-14);
-  const PolygonMesh fast = refine(mesh, four_eight_scheme(), levels(3));
-  test::expect_same_positions(fast, last, 1e-14);
+  const PolygonMesh mesh = test::jittered(test::cube(), 5);
+  test::expect_stencils_are_the_fast_path(mesh, four_eight_scheme(), 3, 1e-14);
   test::expect_refinement_commutes_with_an_affine_map(mesh, four_eight_scheme(), 3, 1e-12);
 }
 

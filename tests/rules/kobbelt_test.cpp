@@ -140,10 +140,7 @@ TEST(Kobbelt, RegularGridWeightsGolden) {
 // included; two levels, random heights.
 TEST(Kobbelt, OpenRegularGridIsTheTensorProductOfFourPointCurves) {
   const int n = 7, m = 5;
-  PolygonMesh grid = test::quad_grid(n, m);
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> height(-1.0, 1.0);
-  for (Vec3& p : grid.positions) p.z = height(random);
+  const PolygonMesh grid = test::with_random_heights(test::quad_grid(n, m), 11);
   std::vector<std::vector<double>> z(m + 1, std::vector<double>(n + 1));
   for (const Vec3& p : grid.positions) z[static_cast<std::size_t>(p.y)][static_cast<std::size_t>(p.x)] = p.z;
   const auto expected = tensor_four_point(tensor_four_point(z));
@@ -237,15 +234,8 @@ TEST(Kobbelt, FacePointsNextToExtraordinaryVerticesAgreeInBothDirections) {
 }
 
 TEST(Kobbelt, InterpolatesRowsSumToOneAndAffineInvariance) {
-  PolygonMesh mesh = test::cube();  // valence 3 everywhere
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  for (Vec3& p : mesh.positions) p += Vec3{jitter(random), jitter(random), jitter(random)};
-  PolygonMesh last;
-  const std::vector<StencilTable> tables = refine_stencils(mesh, kobbelt_scheme(), levels(3), &last);
-  test::expect_rows_sum_to_one(tables, 1e-13);
-  const PolygonMesh fast = refine(mesh, kobbelt_scheme(), levels(3));
-  test::expect_same_positions(fast, last, 1e-13);
+  const PolygonMesh mesh = test::jittered(test::cube(), 5);  // valence 3 everywhere
+  test::expect_stencils_are_the_fast_path(mesh, kobbelt_scheme(), 3, 1e-13);
   // Old vertices stay: the control points come last at every level.
   const PolygonMesh one = refine(mesh, kobbelt_scheme(), levels(1));
   const auto first_old = static_cast<std::size_t>(one.vertex_count() - mesh.vertex_count());

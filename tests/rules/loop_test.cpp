@@ -7,7 +7,6 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <utility>
 
 #include "subdiv/io/mesh_io.h"
@@ -153,10 +152,7 @@ TEST(Loop, RegularGridReproducesTheQuarticBoxSpline) {
   }
 
   const int n = 12;
-  PolygonMesh grid = test::triangle_grid(n, n);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> height(-1.0, 1.0);
-  for (Vec3& p : grid.positions) p.z = height(rng);
+  const PolygonMesh grid = test::with_random_heights(test::triangle_grid(n, n), 5);
   auto spline = [&](double x, double y) {
     double z = 0;
     for (const Vec3& c : grid.positions)

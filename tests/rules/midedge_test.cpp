@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include "subdiv/analysis/analyze.h"
 
@@ -36,10 +35,7 @@ PolygonMesh closed_mixed_mesh() {
       mesh.add_face({q[0], q[1], q[2], q[3]});
     }
   }
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  for (Vec3& p : mesh.positions) p += Vec3{jitter(random), jitter(random), jitter(random)};
-  return mesh;
+  return test::jittered(mesh, 5);
 }
 
 TEST(Midedge, OneStepMakesAVertexPerEdgeAndAFacePerFaceAndVertex) {

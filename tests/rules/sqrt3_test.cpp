@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/ring_mesh.h"
@@ -42,12 +41,7 @@ PolygonMesh annulus(int n) {
   return mesh;
 }
 
-PolygonMesh jittered(PolygonMesh mesh, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  for (Vec3& p : mesh.positions) p += Vec3{jitter(random), jitter(random), jitter(random)};
-  return mesh;
-}
+using test::jittered;
 
 double signed_area(const PolygonMesh& mesh, Index f) {
   const auto t = mesh.face(f);

@@ -28,6 +28,21 @@ inline void expect_same_positions(const PolygonMesh& a, const PolygonMesh& b, do
   for (std::size_t i = 0; i < a.positions.size(); ++i) EXPECT_NEAR(norm(a.positions[i] - b.positions[i]), 0.0, tolerance) << i;
 }
 
+/// `levels` levels of `scheme` on `mesh` as stencil tables: every row sums
+/// to one (within `row_tolerance`) and applying them gives the fast path's
+/// positions (within `position_tolerance`, by default the same). Returns
+/// the fast path's mesh.
+inline PolygonMesh expect_stencils_are_the_fast_path(const PolygonMesh& mesh, const Scheme& scheme, int levels,
+                                                     double row_tolerance, double position_tolerance = -1.0) {
+  RefineOptions options;
+  options.levels = levels;
+  PolygonMesh last;
+  expect_rows_sum_to_one(refine_stencils(mesh, scheme, options, &last), row_tolerance);
+  PolygonMesh fast = refine(mesh, scheme, options);
+  expect_same_positions(fast, last, position_tolerance < 0.0 ? row_tolerance : position_tolerance);
+  return fast;
+}
+
 /// Refining the image of `mesh` under a fixed shearing, scaling and
 /// translating map gives the image of its refinement.
 inline void expect_refinement_commutes_with_an_affine_map(const PolygonMesh& mesh, const Scheme& scheme, int levels,

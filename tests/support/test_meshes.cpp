@@ -1,5 +1,7 @@
 #include "support/test_meshes.h"
 
+#include <random>
+
 namespace subdiv::test {
 
 PolygonMesh cube() {
@@ -26,6 +28,20 @@ PolygonMesh triangle_grid(int n, int m) {
     mesh.add_face({q[0], q[1], q[2]});
     mesh.add_face({q[0], q[2], q[3]});
   }
+  return mesh;
+}
+
+PolygonMesh jittered(PolygonMesh mesh, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  for (Vec3& p : mesh.positions) p += Vec3{jitter(random), jitter(random), jitter(random)};
+  return mesh;
+}
+
+PolygonMesh with_random_heights(PolygonMesh mesh, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> height(-1.0, 1.0);
+  for (Vec3& p : mesh.positions) p.z = height(random);
   return mesh;
 }
 

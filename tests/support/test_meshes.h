@@ -15,6 +15,12 @@ PolygonMesh quad_grid(int n, int m);
 PolygonMesh triangle_grid(int n, int m);
 /// Regular tetrahedron.
 PolygonMesh tetrahedron();
+/// The mesh with every vertex moved by up to 0.1 along each axis, the same
+/// for the same seed (std::mt19937).
+PolygonMesh jittered(PolygonMesh mesh, unsigned seed);
+/// The mesh with heights z drawn uniformly from [-1, 1], the same for the
+/// same seed (std::mt19937): a generic function sampled on a planar grid.
+PolygonMesh with_random_heights(PolygonMesh mesh, unsigned seed);
 /// Triangle, quad and pentagon over coordinates that round-trip only if every
 /// digit is kept (thirds, 1e300, denormals, -0.0, the largest double).
 PolygonMesh hard_numbers_mesh();
