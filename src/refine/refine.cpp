@@ -194,9 +194,20 @@ Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, int 
   return level;
 }
 
+// Whether the engine may take two steps of `scheme` as one level of
+// scheme.two_steps on this level: its masks read closed manifold levels,
+// and face-varying values follow the steps' own splits.
+bool takes_two_steps(const Scheme& scheme, const PolygonMesh& mesh, const MeshTopology& topology) {
+  if (!scheme.two_steps || !mesh.face_varying_channels.empty()) return false;
+  for (Index e = 0; e < topology.edge_count(); ++e)
+    if (topology.edge_face_count(e) != 2) return false;
+  return true;
+}
+
 // The levels one after the other, each parent's topology derived from its
 // own parent's where the split allows it (a manifold level), built from the
-// faces otherwise; `step` refines one level.
+// faces otherwise; `step(parent, topology, l, level_scheme)` refines one
+// level with `scheme`, or two with scheme.two_steps where they apply.
 template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
                           const RefineOptions& options, Step&& step) {
@@ -204,18 +215,21 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
   if (options.boundary_rules == BoundaryRules::piecewise_smooth && options.corner_angles == CornerAngles::measured)
     detail::measure_corner_angles(current, coarse_topology);
   std::optional<MeshTopology> topology = std::move(coarse_topology);
-  for (int l = 0; l < options.levels; ++l) {
+  for (int l = 0; l < options.levels;) {
     if (!topology) topology.emplace(current);
-    Level level = step(current, *topology, l);
-    if (l + 1 == options.levels) topology.reset();
+    const bool twice = l + 2 <= options.levels && takes_two_steps(scheme, current, *topology);
+    const Scheme& level_scheme = twice ? *scheme.two_steps : scheme;
+    Level level = step(current, *topology, l, level_scheme);
+    l += twice ? 2 : 1;
+    if (l == options.levels) topology.reset();
     else if (level.child_topology) topology = std::move(level.child_topology);
-    else if (scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
-    else if (scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
-    else if (scheme.split == SplitRule::sqrt3) topology = MeshTopology::from_sqrt3_split(*topology, level.child);
-    else if (scheme.split == SplitRule::sqrt2) topology = MeshTopology::from_sqrt2_split(*topology, level.child);
+    else if (level_scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
+    else if (level_scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
+    else if (level_scheme.split == SplitRule::sqrt3) topology = MeshTopology::from_sqrt3_split(*topology, level.child);
+    else if (level_scheme.split == SplitRule::sqrt2) topology = MeshTopology::from_sqrt2_split(*topology, level.child);
     else topology.reset();  // built from the child's faces
     current = std::move(level.child);
-    if (options.on_level) options.on_level(l + 1, current);
+    if (options.on_level) options.on_level(l, current);
     // A derived topology holds a copy of the level's faces, and refinement
     // reads faces only through the topology: drop the mesh's copy, the
     // largest arrays of the level before the last (the final level keeps its
@@ -276,9 +290,14 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const Parent
                                  std::vector<double>(static_cast<std::size_t>(level.map.child_vertex_count) *
                                                      static_cast<std::size_t>(in.components))};
   }
+  if (scheme.evaluate_positions) {
+    scheme.evaluate_positions(view.topology, level.map, parent.positions, child.positions);
+    if (parent.vertex_channels.empty()) return;
+  }
   for_each_child_mask(view, scheme, level.map, [&](Index i, const MaskBuilder& mask) {
     const auto at = static_cast<std::size_t>(i);
-    child.positions[at] = apply_mask(mask, level.map, parent.positions.data(), child.positions.data());
+    if (!scheme.evaluate_positions)
+      child.positions[at] = apply_mask(mask, level.map, parent.positions.data(), child.positions.data());
     for (std::size_t ch = 0; ch < parent.vertex_channels.size(); ++ch) {
       const auto k = static_cast<std::size_t>(parent.vertex_channels[ch].components);
       double* values = child.vertex_channels[ch].values.data();
@@ -452,8 +471,9 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   const CreaseMethod method = crease_method_of(mesh, options);
   PolygonMesh result;
   run_with_threads(options.threads, [&] {
-    result = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology, int l) {
-      return refine_level(parent, topology, l, scheme, boundary, method, options,
+    result = refine_levels(mesh, std::move(coarse), scheme, options,
+                           [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
+      return refine_level(parent, topology, l, level_scheme, boundary, method, options,
                           [&](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level, bool) {
                             evaluate_fast(source, step, view, level);
                             detail::apply_flatness(level.flatness, level.child);
@@ -471,9 +491,10 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
   const CreaseMethod method = crease_method_of(mesh, options);
   std::vector<StencilTable> tables;
   run_with_threads(options.threads, [&] {
-    PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology, int l) {
+    PolygonMesh last = refine_levels(mesh, std::move(coarse), scheme, options,
+                                     [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
       Level level = refine_level(
-          parent, topology, l, scheme, boundary, method, options,
+          parent, topology, l, level_scheme, boundary, method, options,
           [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool first) {
             // A composite scheme's later steps compose onto the level's table.
             if (first) tables.push_back(record_stencils(view, step, lv.map, nullptr));
@@ -498,8 +519,9 @@ StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme,
   const CreaseMethod method = crease_method_of(mesh, options);
   std::optional<StencilTable> total;
   run_with_threads(options.threads, [&] {
-    refine_levels(mesh, std::move(coarse), scheme, options, [&](const PolygonMesh& parent, const MeshTopology& topology, int l) {
-      return refine_level(parent, topology, l, scheme, boundary, method, options,
+    refine_levels(mesh, std::move(coarse), scheme, options,
+                  [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
+      return refine_level(parent, topology, l, level_scheme, boundary, method, options,
                           [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool) {
                             total = record_stencils(view, step, lv.map, total ? &*total : nullptr);
                             detail::apply_flatness(lv.flatness, *total);

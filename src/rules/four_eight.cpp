@@ -26,8 +26,27 @@
 // 1/(2k) sum of new points: on a regular grid that is 5/8, 1/16, 1/32, not
 // the box spline, so it is not used.)
 
+//
+// Two steps at once (four_eight_two_steps_scheme): two sqrt2 steps of a
+// closed mesh are its quad split. The first step makes a face point F_f (the
+// face average) and moves each vertex to W_v = 1/2 v + 1/(2k) (sum of its k
+// edge neighbours); in that level, a face point's edge neighbours are its
+// face's vertices and a vertex's are the face points around it, and each
+// parent edge (a, b) between faces f, g is the quad (a, F_g, b, F_f). So the
+// second step makes
+//   edge point    E_e  = 1/4 (W_a + W_b + F_f + F_g)    (that quad's face point)
+//   face point    F'_f = 1/2 F_f + 1/(2n) sum of W over f's n corners
+//   vertex point  W'_v = 1/2 W_v + 1/(2m) sum of F over v's m faces.
+// The masks below spell these out over the parent's vertices (for stencils
+// and the analysis); the fast path computes F and W first and then the
+// three sums, a quarter of the arithmetic of the wide masks.
+
 #include "subdiv/rules/four_eight.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "../core/large_buffers.h"
 #include "rule_helpers.h"
 
 namespace subdiv {
@@ -36,15 +55,114 @@ namespace {
 
 void face_point(const LevelView& level, Index f, MaskBuilder& mask) { detail::add_face_average(level, f, 1.0, mask); }
 
-void vertex_point(const LevelView& level, Index v, VertexRule, MaskBuilder& mask) {
-  const MeshTopology& t = level.topology;
+// w times the first step's vertex point W_v.
+void add_moved_vertex(const MeshTopology& t, Index v, double w, MaskBuilder& mask) {
   const auto edges = t.vertex_edges(v);
-  mask.add(v, edges.empty() ? 1.0 : 0.5);
-  const double each = 0.5 / static_cast<double>(edges.size());
+  mask.add(v, edges.empty() ? w : 0.5 * w);
+  const double each = 0.5 * w / static_cast<double>(edges.size());
   for (const Index e : edges) mask.add(t.other_vertex(e, v), each);
 }
 
+void vertex_point(const LevelView& level, Index v, VertexRule, MaskBuilder& mask) {
+  add_moved_vertex(level.topology, v, 1.0, mask);
+}
+
+// The two steps' masks, over the parent of both.
+
+void two_step_face_point(const LevelView& level, Index f, MaskBuilder& mask) {
+  const auto corners = level.topology.face_vertices(f);
+  const double n = static_cast<double>(corners.size());
+  detail::add_face_average(level, f, 0.5, mask);
+  for (const Index v : corners) add_moved_vertex(level.topology, v, 0.5 / n, mask);
+}
+
+void two_step_edge_point(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) {
+  const MeshTopology& t = level.topology;
+  for (const Index v : t.edge_vertices(e)) add_moved_vertex(t, v, 0.25, mask);
+  for (const Index c : t.edge_corners(e)) detail::add_face_average(level, t.corner_face(c), 0.25, mask);
+}
+
+void two_step_vertex_point(const LevelView& level, Index v, VertexRule, MaskBuilder& mask) {
+  const MeshTopology& t = level.topology;
+  const auto corners = t.vertex_corners(v);
+  if (corners.empty()) return mask.add(v, 1.0);  // an isolated vertex stays
+  add_moved_vertex(t, v, 0.5, mask);
+  const double each = 0.5 / static_cast<double>(corners.size());
+  for (const Index c : corners) detail::add_face_average(level, t.corner_face(c), each, mask);
+}
+
+// The same values in two passes: F and W, then the quad split's points.
+void two_step_positions(const MeshTopology& t, const SplitMap& map, std::span<const Vec3> p, std::span<Vec3> out) {
+  const Index nf = t.face_count(), ne = t.edge_count(), nv = t.vertex_count();
+  std::vector<Vec3> F, W;
+  detail::assign_large(F, static_cast<std::size_t>(nf), Vec3{});
+  detail::assign_large(W, static_cast<std::size_t>(nv), Vec3{});
+  auto face_average = [&](Index f) {
+    const auto corners = t.face_vertices(f);
+    Vec3 sum;
+    for (const Index v : corners) sum += p[static_cast<std::size_t>(v)];
+    return sum * (1.0 / static_cast<double>(corners.size()));
+  };
+  const std::size_t grain = 4096;
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, grain), [&](const tbb::blocked_range<Index>& r) {
+    for (Index f = r.begin(); f != r.end(); ++f) F[static_cast<std::size_t>(f)] = face_average(f);
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nv, grain), [&](const tbb::blocked_range<Index>& r) {
+    for (Index v = r.begin(); v != r.end(); ++v) {
+      const auto edges = t.vertex_edges(v);
+      Vec3 sum;
+      for (const Index e : edges) sum += p[static_cast<std::size_t>(t.other_vertex(e, v))];
+      const Vec3 at = p[static_cast<std::size_t>(v)];
+      W[static_cast<std::size_t>(v)] = edges.empty() ? at : 0.5 * at + sum * (0.5 / static_cast<double>(edges.size()));
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, grain), [&](const tbb::blocked_range<Index>& r) {
+    for (Index f = r.begin(); f != r.end(); ++f) {
+      const auto corners = t.face_vertices(f);
+      Vec3 sum;
+      for (const Index v : corners) sum += W[static_cast<std::size_t>(v)];
+      out[static_cast<std::size_t>(map.face_point(f))] =
+          0.5 * F[static_cast<std::size_t>(f)] + sum * (0.5 / static_cast<double>(corners.size()));
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, ne, grain), [&](const tbb::blocked_range<Index>& r) {
+    for (Index e = r.begin(); e != r.end(); ++e) {
+      const auto [a, b] = t.edge_vertices(e);
+      const auto sides = t.edge_corners(e);
+      const Vec3 faces = F[static_cast<std::size_t>(t.corner_face(sides[0]))] + F[static_cast<std::size_t>(t.corner_face(sides[1]))];
+      out[static_cast<std::size_t>(map.edge_point(e))] = 0.25 * (W[static_cast<std::size_t>(a)] + W[static_cast<std::size_t>(b)] + faces);
+    }
+  });
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nv, grain), [&](const tbb::blocked_range<Index>& r) {
+    for (Index v = r.begin(); v != r.end(); ++v) {
+      const auto corners = t.vertex_corners(v);
+      Vec3 sum;
+      for (const Index c : corners) sum += F[static_cast<std::size_t>(t.corner_face(c))];
+      const Vec3 at = W[static_cast<std::size_t>(v)];
+      out[static_cast<std::size_t>(map.vertex_point(v))] =
+          corners.empty() ? at : 0.5 * at + sum * (0.5 / static_cast<double>(corners.size()));
+    }
+  });
+}
+
 }  // namespace
+
+const Scheme& four_eight_two_steps_scheme() {
+  static const Scheme scheme = [] {
+    Scheme s{"four-eight (two steps)",
+             "two four-eight steps as one quad split (closed meshes)",
+             "L. Velho, D. Zorin: 4-8 subdivision, CAGD 18(5), 2001 (regular rules from its box spline)",
+             SplitRule::quad,
+             false,
+             two_step_face_point,
+             two_step_edge_point,
+             two_step_vertex_point};
+    s.needs_closed_mesh = true;
+    s.evaluate_positions = two_step_positions;
+    return s;
+  }();
+  return scheme;
+}
 
 const Scheme& four_eight_scheme() {
   static const Scheme scheme = [] {
@@ -59,6 +177,7 @@ const Scheme& four_eight_scheme() {
              vertex_point};
     s.period = 2;  // the layout turns by 45 degrees on each step
     s.needs_closed_mesh = true;
+    s.two_steps = &four_eight_two_steps_scheme();
     return s;
   }();
   return scheme;

@@ -201,8 +201,10 @@ run analyze-isqrt3-boundary 0 analyze -s interpolatory-sqrt3 --boundary -k 1..5
 [ "$(grep -cE "^boundary k=[0-9]+ .* C1 " "$work/out")" = 5 ] && pass || fail "analyze interpolatory-sqrt3: boundary not C1"
 run analyze-isqrt3 0 analyze -s interpolatory-sqrt3 -k 3..8 --no-charmap &&
   grep -qE "^interior k=6 +37 +3 +0.333333 +0.333333 " "$work/out" && pass || fail "analyze interpolatory-sqrt3: k=6 row"
-run refine-four-eight 0 refine "$meshes/cube.obj" -s four-eight -l 2 -o "$work/48.obj" --stats
-stdout_has refine-four-eight "level 1: 14 vertices, 12 faces" && stdout_has refine-four-eight "level 2: 26 vertices, 24 faces"
+# Two steps at once (a quad split), then one: levels 2 and 3 are reported.
+run refine-four-eight 0 refine "$meshes/cube.obj" -s four-eight -l 3 -o "$work/48.obj" --stats
+stdout_has refine-four-eight "level 2: 26 vertices, 24 faces" && stdout_has refine-four-eight "level 3: 50 vertices, 48 faces"
+if grep -q "^level 1:" "$work/out"; then fail "refine four-eight: level 1 reported"; else pass; fi
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/quad.obj"
 run refine-four-eight-open 1 refine "$work/quad.obj" -s four-eight -o "$work/x.obj" &&
   stderr_one_line refine-four-eight-open && stderr_has refine-four-eight-open "needs a closed mesh"

@@ -2,12 +2,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
+#include <vector>
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/ring_mesh.h"
 #include "subdiv/core/error.h"
+#include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/validation.h"
 #include "subdiv/refine/refine.h"
@@ -142,6 +146,131 @@ TEST(FourEight, AnalysisRegularIsTheBoxSplineAndC1Elsewhere) {
     ASSERT_TRUE(a.matrix.invariant) << k;
     EXPECT_EQ(a.matrix.period, 2);
     EXPECT_EQ(a.verdict, SmoothnessVerdict::c1) << k << ": " << a.reason;
+  }
+}
+
+// Four-eight one sqrt2 step at a time, never two at once.
+Scheme single_steps() {
+  Scheme s = four_eight_scheme();
+  s.two_steps = nullptr;
+  return s;
+}
+
+// A closed mesh with pentagons and quads (valence 3 everywhere).
+PolygonMesh pentagonal_prism() {
+  std::vector<Vec3> points;
+  for (const double z : {0.0, 1.0})
+    for (int i = 0; i < 5; ++i)
+      points.push_back({std::cos(2 * std::numbers::pi * i / 5), std::sin(2 * std::numbers::pi * i / 5), z});
+  std::vector<std::vector<Index>> faces = {{0, 4, 3, 2, 1}, {5, 6, 7, 8, 9}};
+  for (Index i = 0; i < 5; ++i) faces.push_back({i, (i + 1) % 5, 5 + (i + 1) % 5, 5 + i});
+  return make_mesh(points, faces);
+}
+
+PolygonMesh spot() { return read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh; }
+
+// Closed meshes without face-varying channels (Spot's texture coordinates
+// dropped); the cube has a vertex no face uses.
+std::vector<std::pair<std::string, PolygonMesh>> closed_meshes() {
+  PolygonMesh untextured = spot();
+  untextured.face_varying_channels.clear();
+  PolygonMesh cube = test::jittered(test::cube(), 11);
+  cube.positions.push_back({3.0, 2.0, 1.0});
+  return {{"cube", cube},
+          {"tetrahedron", test::jittered(test::tetrahedron(), 12)},
+          {"pentagonal prism", test::jittered(pentagonal_prism(), 13)},
+          {"spot", untextured}};
+}
+
+// The faces as cycles starting at their smallest vertex, sorted.
+std::vector<std::vector<Index>> face_cycles(const PolygonMesh& mesh, const std::vector<Index>& relabel) {
+  std::vector<std::vector<Index>> cycles;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    std::vector<Index> c;
+    for (const Index v : mesh.face(f)) c.push_back(relabel.empty() ? v : relabel[static_cast<std::size_t>(v)]);
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    cycles.push_back(std::move(c));
+  }
+  std::sort(cycles.begin(), cycles.end());
+  return cycles;
+}
+
+// Two steps at once (the quad split, four_eight_two_steps_scheme) make the
+// same surface as two single steps: the same points, renumbered from the
+// steps' [edge | face | vertex points] to the quad split's [face | edge |
+// vertex points], and the same faces. A vertex channel follows the
+// positions.
+TEST(FourEight, TwoStepsAtOnceAreTwoSingleSteps) {
+  for (auto [name, mesh] : closed_meshes()) {
+    VertexChannel xz{"xz", 2, {}};
+    for (const Vec3& p : mesh.positions) xz.values.insert(xz.values.end(), {p.x, p.z});
+    mesh.vertex_channels.push_back(xz);
+    const MeshTopology t(mesh);
+    const Index nf = t.face_count(), ne = t.edge_count(), nv = t.vertex_count();
+    const PolygonMesh steps = refine(mesh, single_steps(), levels(2));
+    const PolygonMesh once = refine(mesh, four_eight_scheme(), levels(2));
+    ASSERT_EQ(once.vertex_count(), nf + ne + nv) << name;
+    ASSERT_EQ(steps.vertex_count(), nf + ne + nv) << name;
+    std::vector<Index> relabel(static_cast<std::size_t>(nf + ne + nv));  // steps' vertex -> once's
+    for (Index e = 0; e < ne; ++e) relabel[static_cast<std::size_t>(e)] = nf + e;
+    for (Index f = 0; f < nf; ++f) relabel[static_cast<std::size_t>(ne + f)] = f;
+    for (Index v = 0; v < nv; ++v) relabel[static_cast<std::size_t>(ne + nf + v)] = nf + ne + v;
+    const double size = norm(mesh.positions[0]) + 1.0;
+    for (Index i = 0; i < steps.vertex_count(); ++i) {
+      const auto j = static_cast<std::size_t>(relabel[static_cast<std::size_t>(i)]);
+      const Vec3 p = once.positions[j];
+      EXPECT_NEAR(norm(steps.positions[static_cast<std::size_t>(i)] - p), 0.0, 1e-14 * size) << name << " " << i;
+      EXPECT_NEAR(once.vertex_channels[0].values[2 * j], p.x, 1e-14 * size) << name << " " << i;
+      EXPECT_NEAR(once.vertex_channels[0].values[2 * j + 1], p.z, 1e-14 * size) << name << " " << i;
+    }
+    EXPECT_EQ(face_cycles(steps, relabel), face_cycles(once, {})) << name;
+  }
+}
+
+// An odd count ends with one step, and pairs and steps reach the same
+// points (compared without their order).
+TEST(FourEight, OddLevelsEndWithOneStep) {
+  const PolygonMesh cube = test::jittered(test::cube(), 21);
+  const PolygonMesh steps = refine(cube, single_steps(), levels(5));
+  const PolygonMesh mixed = refine(cube, four_eight_scheme(), levels(5));
+  ASSERT_EQ(mixed.vertex_count(), steps.vertex_count());
+  ASSERT_EQ(mixed.face_count(), steps.face_count());
+  for (const Vec3& p : steps.positions) {
+    double nearest = 1e300;
+    for (const Vec3& q : mixed.positions) nearest = std::min(nearest, norm(p - q));
+    EXPECT_LT(nearest, 1e-14);
+  }
+}
+
+// Face-varying values follow the sqrt2 split's own rule, so a mesh that
+// carries them is refined one step at a time.
+TEST(FourEight, FaceVaryingChannelsKeepSingleSteps) {
+  const PolygonMesh textured = spot();
+  ASSERT_FALSE(textured.face_varying_channels.empty());
+  const PolygonMesh steps = refine(textured, single_steps(), levels(4));
+  const PolygonMesh refined = refine(textured, four_eight_scheme(), levels(4));
+  EXPECT_EQ(refined.positions, steps.positions);
+  EXPECT_EQ(refined.face_indices, steps.face_indices);
+  EXPECT_EQ(refined.face_varying_channels[0].values, steps.face_varying_channels[0].values);
+}
+
+// The two-step masks: stencils equal the two-pass fast path, and the
+// analysis of the quad-split scheme finds four-eight's own two-step spectrum
+// (an independent route: four-eight's matrix composes two sqrt2 steps on
+// its own ring), C1 at valences 3..12.
+TEST(FourEight, TwoStepMasksAreTheFastPathAndTheTwoStepMatrix) {
+  for (const auto& [name, mesh] : closed_meshes())
+    test::expect_stencils_are_the_fast_path(mesh, four_eight_two_steps_scheme(), 2, 1e-14, 1e-13);
+  for (int k = 3; k <= 12; ++k) {
+    const Configuration c{Configuration::Kind::interior, k, CornerType::convex};
+    const ConfigurationAnalysis pair = analyze(four_eight_two_steps_scheme(), c);
+    const ConfigurationAnalysis steps = analyze(four_eight_scheme(), c);
+    ASSERT_TRUE(pair.matrix.invariant) << k << ": " << pair.matrix.invariance_note;
+    EXPECT_EQ(pair.matrix.period, 1);
+    EXPECT_EQ(pair.verdict, SmoothnessVerdict::c1) << k << ": " << pair.reason;
+    ASSERT_GE(pair.leading.size(), 4u);
+    ASSERT_GE(steps.leading.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) EXPECT_NEAR(std::abs(pair.leading[i]), std::abs(steps.leading[i]), 1e-12) << k << " " << i;
   }
 }
 

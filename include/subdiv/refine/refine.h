@@ -52,6 +52,9 @@ struct RefineOptions {
   /// Worker threads; 0 = all available. Results are identical for any count.
   int threads = 0;
   /// Called after each level with its number (1-based) and the level's mesh.
+  /// Where the engine takes two steps at once (Scheme::two_steps: 4-8 on a
+  /// closed mesh without face-varying channels) the level between them is
+  /// never made, and only the second is reported.
   std::function<void(int level, const PolygonMesh& mesh)> on_level;
   BoundaryRules boundary_rules = BoundaryRules::standard;
   CornerAngles corner_angles = CornerAngles::fixed;
@@ -80,8 +83,9 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {},
                    const SourceLines* lines = nullptr);
 
-/// The same refinement recorded as stencil tables, one per level (level i-1
-/// -> level i). `final_level`, if given, receives the last level's mesh with
+/// The same refinement recorded as stencil tables, one per level made
+/// (level i-1 -> level i; one for both of two steps taken at once, see
+/// RefineOptions::on_level). `final_level`, if given, receives the last level's mesh with
 /// positions evaluated through the tables.
 std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme,
                                           const RefineOptions& options = {}, PolygonMesh* final_level = nullptr);

@@ -7,5 +7,9 @@
 namespace subdiv {
 
 const Scheme& four_eight_scheme();
+/// Two four-eight steps as one quad-split level of a closed mesh, which the
+/// engine takes where two steps remain (Scheme::two_steps); not listed
+/// among the schemes.
+const Scheme& four_eight_two_steps_scheme();
 
 }  // namespace subdiv

@@ -192,6 +192,13 @@ using CornerMask = void (*)(const LevelView& level, Index corner, MaskBuilder& m
 /// end `vertex` of boundary edge `edge`.
 using BoundaryPointMask = void (*)(const LevelView& level, Index edge, Index vertex, MaskBuilder& mask);
 
+/// A level's child positions computed straight from the parent's, for the
+/// fast path (refine()): the same values as the scheme's masks (tested
+/// against the stencils), cheaper where the masks are wide. `map` is the
+/// level's split of `parent`.
+using PositionEvaluator = void (*)(const MeshTopology& parent, const SplitMap& map, std::span<const Vec3> parent_positions,
+                                   std::span<Vec3> child_positions);
+
 struct Scheme;
 /// Composite schemes: the operators one level applies in turn, each an
 /// ordinary one-split scheme with its own parameters (refine.cpp).
@@ -237,6 +244,15 @@ struct Scheme {
   /// weight the quad split's vertices; `split` is then the level's overall
   /// split (quad, or dual when the steps end with A). nullptr otherwise.
   StepList steps = nullptr;
+  /// A quad-split scheme one level of which is two steps of this one (4-8:
+  /// two sqrt2 steps make the quad split). The engine refines with it where
+  /// two steps remain and the level is closed, manifold and carries no
+  /// face-varying channel; its child numbers the vertices [face points |
+  /// edge points | vertex points] as every quad split does. nullptr: none.
+  const Scheme* two_steps = nullptr;
+  /// The fast path's positions (PositionEvaluator); nullptr: the masks.
+  /// Vertex channels always take the masks.
+  PositionEvaluator evaluate_positions = nullptr;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.
