@@ -281,6 +281,32 @@ void apply_mask(const MaskBuilder& mask, const SplitMap& map, const double* pare
   }
 }
 
+// The fast path's positions through Scheme::evaluate_point, the masks
+// where it declines; in the masks' order of ranges.
+void evaluate_points(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view, Level& level) {
+  const SplitMap& map = level.map;
+  std::span<const Vec3> in = parent.positions;
+  std::span<Vec3> out = level.child.positions;
+  auto range = [&](Index begin, Index end) {
+    tbb::parallel_for(tbb::blocked_range<Index>(begin, end, 2048), [&](const tbb::blocked_range<Index>& r) {
+      MaskBuilder mask;
+      mask.reserve(64);
+      for (Index i = r.begin(); i != r.end(); ++i) {
+        Vec3& p = out[static_cast<std::size_t>(i)];
+        if (scheme.evaluate_point(view.view(), map, i, in, out, p)) continue;
+        child_mask(view, scheme, map, i, mask);
+        p = apply_mask(mask, map, in.data(), out.data());
+      }
+    });
+  };
+  if (scheme.face_points_read_edge_points) {
+    range(map.edge_points, map.child_vertex_count);
+    return range(0, map.edge_points);
+  }
+  range(0, map.edge_points);
+  range(map.edge_points, map.child_vertex_count);
+}
+
 void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view, Level& level) {
   PolygonMesh& child = level.child;
   child.vertex_channels.resize(parent.vertex_channels.size());
@@ -290,6 +316,8 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const Parent
                                  std::vector<double>(static_cast<std::size_t>(level.map.child_vertex_count) *
                                                      static_cast<std::size_t>(in.components))};
   }
+  if (parent.vertex_channels.empty() && scheme.evaluate_point && !scheme.evaluate_positions)
+    return evaluate_points(parent, scheme, view, level);
   if (scheme.evaluate_positions) {
     scheme.evaluate_positions(view.topology, level.map, parent.positions, child.positions);
     if (parent.vertex_channels.empty()) return;

@@ -96,10 +96,9 @@ bool regular(const MeshTopology& t, Index v) { return t.vertex_kind(v) != Vertex
 // corners turn the same way, so the three corners name the face's three
 // apices once each. This is add_regular_rule's rule; it reads each corner's
 // contiguous ring instead of chasing corner_across three faces deep, which
-// waits on memory.
-bool add_regular_rule_from_rings(const MeshTopology& t, Index f, MaskBuilder& mask) {
+// waits on memory. points[i] = {apex, beyond, beyond} around corner i.
+bool regular_rule_points_from_rings(const MeshTopology& t, Index f, Index (&points)[3][3]) {
   const Index first = t.face_first_corner(f);
-  Index points[3][3];
   for (Index i = 0; i < 3; ++i) {
     const Index c = first + i;
     const Index v = t.corner_vertex(c);
@@ -115,6 +114,13 @@ bool add_regular_rule_from_rings(const MeshTopology& t, Index f, MaskBuilder& ma
     const bool x_on_face = x == t.corner_vertex(t.corner_next(c)) || x == t.corner_vertex(t.corner_prev(c));
     points[i][0] = x_on_face ? t.corner_vertex(t.corner_prev(side)) : x;
   }
+  return true;
+}
+
+bool add_regular_rule_from_rings(const MeshTopology& t, Index f, MaskBuilder& mask) {
+  Index points[3][3];
+  if (!regular_rule_points_from_rings(t, f, points)) return false;
+  const Index first = t.face_first_corner(f);
   for (Index i = 0; i < 3; ++i) {
     mask.add(t.corner_vertex(first + i), 32.0 / 81.0);
     mask.add(points[i][0], -1.0 / 81.0);
@@ -255,6 +261,32 @@ void face_point(const LevelView& level, Index f, MaskBuilder& mask) {
 
 void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
 
+// The fast path: vertex points copied, face points of the 12-point rule read
+// off the rings summed directly; boundary points and faces at extraordinary
+// or boundary vertices take the masks.
+bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::span<const Vec3> p,
+                    std::span<const Vec3>, Vec3& out) {
+  auto at = [&](Index v) { return p[static_cast<std::size_t>(v)]; };
+  if (i >= map.vertex_points) {
+    out = at(i - map.vertex_points);
+    return true;
+  }
+  if (i >= map.edge_points) return false;
+  const MeshTopology& t = level.topology;
+  const Index f = map.point_face(i - map.face_points);
+  Index points[3][3];
+  if (!regular_rule_points_from_rings(t, f, points)) return false;
+  const Index first = t.face_first_corner(f);
+  Vec3 corners, apices, beyond;
+  for (Index c = 0; c < 3; ++c) {
+    corners += at(t.corner_vertex(first + c));
+    apices += at(points[c][0]);
+    beyond += at(points[c][1]) + at(points[c][2]);
+  }
+  out = (32.0 / 81.0) * corners + (-1.0 / 81.0) * apices + (-2.0 / 81.0) * beyond;
+  return true;
+}
+
 bool is_corner(const LevelView& level, Index v) {
   return !level.vertex_rule.empty() && level.vertex_rule[static_cast<std::size_t>(v)] == VertexRule::corner;
 }
@@ -298,6 +330,7 @@ const Scheme& interpolatory_sqrt3_scheme() {
              nullptr,
              vertex_point};
     s.boundary_point = boundary_point;
+    s.evaluate_point = evaluate_point;
     s.period = 2;
     return s;
   }();

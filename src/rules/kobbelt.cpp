@@ -162,6 +162,21 @@ bool add_sector_virtual_point(const LevelView& level, Index v, Index e, bool cor
   return true;
 }
 
+// The neighbour across v from edge e where v is a regular interior vertex
+// (a smooth or dart vertex with an ordered ring of 4 edges and 4 faces),
+// else kInvalidIndex: add_beyond's grid case, which the fast path reads.
+Index regular_beyond(const LevelView& level, Index v, Index e) {
+  const MeshTopology& t = level.topology;
+  const auto edges = t.vertex_edges(v);
+  if (edges.size() != 4 || t.vertex_kind(v) != VertexKind::interior || t.vertex_face_count(v) != 4 ||
+      !t.ring_ordered(v))
+    return kInvalidIndex;
+  const VertexRule rule = rule_of(level, v);
+  if (rule == VertexRule::crease || rule == VertexRule::corner) return kInvalidIndex;
+  const int i = ring_position(t, v, e);
+  return i < 0 ? kInvalidIndex : t.other_vertex(edges[static_cast<std::size_t>((i + 2) % 4)], v);
+}
+
 // Adds s times the point beyond v on the line from the other end of edge e
 // through v (see the file comment for the cases).
 void add_beyond(const LevelView& level, Index v, Index e, double s, MaskBuilder& mask) {
@@ -171,6 +186,7 @@ void add_beyond(const LevelView& level, Index v, Index e, double s, MaskBuilder&
     mask.add(v, 2.0 * s);
     mask.add(u, -s);
   };
+  if (const Index across = regular_beyond(level, v, e); across != kInvalidIndex) return mask.add(across, s);
   const VertexRule rule = rule_of(level, v);
   const auto edges = t.vertex_edges(v);
   if (rule == VertexRule::crease && sharp_at(level, e, v)) {  // along the crease or boundary
@@ -187,7 +203,6 @@ void add_beyond(const LevelView& level, Index v, Index e, double s, MaskBuilder&
   if (t.vertex_kind(v) != VertexKind::interior || t.vertex_face_count(v) != n || n < 3) return extrapolate();
   const int i = ring_position(t, v, e);
   if (i < 0) return extrapolate();
-  if (n == 4) return mask.add(t.other_vertex(edges[static_cast<std::size_t>((i + 2) % 4)], v), s);
   const auto corners = t.vertex_corners(v);
   for (const Index c : corners)
     if (t.face_size(t.corner_face(c)) != 4) return extrapolate();
@@ -253,6 +268,43 @@ void edge_point(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) { 
 
 void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
 
+// The fast path: vertex points copied; the four-point rule summed directly
+// where its points are the grid's (an edge between regular vertices, a face
+// whose four lines of edge points run on); the masks elsewhere.
+bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::span<const Vec3> p,
+                    std::span<const Vec3> child, Vec3& out) {
+  const MeshTopology& t = level.topology;
+  const double w = level.parameters.tension;
+  if (i >= map.vertex_points) {
+    out = p[static_cast<std::size_t>(i - map.vertex_points)];
+    return true;
+  }
+  auto at = [&](Index v) { return p[static_cast<std::size_t>(v)]; };
+  if (i >= map.edge_points) {
+    const Index e = i - map.edge_points;
+    const auto [a, b] = t.edge_vertices(e);
+    const Index a_beyond = regular_beyond(level, a, e), b_beyond = regular_beyond(level, b, e);
+    if (a_beyond == kInvalidIndex || b_beyond == kInvalidIndex) return false;
+    out = (0.5 + w) * (at(a) + at(b)) + (-w) * (at(a_beyond) + at(b_beyond));
+    return true;
+  }
+  const Index f = i - map.face_points;
+  if (t.face_size(f) != 4) return false;
+  const Index first = t.face_first_corner(f);
+  Index beyond[4];
+  for (Index c = 0; c < 4; ++c)
+    if (t.corner_edge(first + c) == kInvalidIndex || (beyond[c] = edge_beyond(level, first + c)) == kInvalidIndex)
+      return false;
+  auto edge = [&](Index e) { return child[static_cast<std::size_t>(map.edge_point(e))]; };
+  Vec3 near, far;
+  for (Index c = 0; c < 4; ++c) {
+    near += edge(t.corner_edge(first + c));
+    far += edge(beyond[c]);
+  }
+  out = 0.5 * ((0.5 + w) * near + (-w) * far);
+  return true;
+}
+
 }  // namespace
 
 const Scheme& kobbelt_scheme() {
@@ -270,6 +322,7 @@ const Scheme& kobbelt_scheme() {
     s.takes_tension = true;
     s.needs_quads = true;
     s.face_points_read_edge_points = true;
+    s.evaluate_point = evaluate_point;
     return s;
   }();
   return scheme;

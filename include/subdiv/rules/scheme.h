@@ -199,6 +199,16 @@ using BoundaryPointMask = void (*)(const LevelView& level, Index edge, Index ver
 using PositionEvaluator = void (*)(const MeshTopology& parent, const SplitMap& map, std::span<const Vec3> parent_positions,
                                    std::span<Vec3> child_positions);
 
+/// The fast path's position of child vertex `child` of the level (`map`)
+/// straight from positions, where the scheme knows a cheaper route than its
+/// mask (its regular cases); false where it does not, and the engine
+/// applies the mask. `child_positions` holds the points made before this
+/// one (face points, or edge points where face masks read them). Must give
+/// the mask's value up to rounding (tested against the stencils).
+using PointEvaluator = bool (*)(const LevelView& level, const SplitMap& map, Index child,
+                                std::span<const Vec3> parent_positions, std::span<const Vec3> child_positions,
+                                Vec3& out);
+
 struct Scheme;
 /// Composite schemes: the operators one level applies in turn, each an
 /// ordinary one-split scheme with its own parameters (refine.cpp).
@@ -253,6 +263,9 @@ struct Scheme {
   /// The fast path's positions (PositionEvaluator); nullptr: the masks.
   /// Vertex channels always take the masks.
   PositionEvaluator evaluate_positions = nullptr;
+  /// The fast path's shortcut per child vertex (PointEvaluator); nullptr:
+  /// the masks. Unused where vertex channels need the masks anyway.
+  PointEvaluator evaluate_point = nullptr;
 };
 
 /// Every scheme, in the order `subdiv schemes` lists them.
