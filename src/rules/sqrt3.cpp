@@ -93,6 +93,31 @@ void boundary_point(const LevelView& level, Index e, Index v, MaskBuilder& mask)
   mask.add(w, 10.0 / 27.0);
 }
 
+// The fast path: face points and smooth vertex points summed directly; the
+// masks on the boundary and at (semi-)sharp corners, whose rules blend.
+bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::span<const Vec3> p,
+                    std::span<const Vec3>, Vec3& out) {
+  const MeshTopology& t = level.topology;
+  auto at = [&](Index v) { return p[static_cast<std::size_t>(v)]; };
+  if (i < map.edge_points) {
+    const auto corners = t.face_vertices(map.point_face(i - map.face_points));
+    if (corners.size() != 3) return false;
+    out = (1.0 / 3.0) * (at(corners[0]) + at(corners[1]) + at(corners[2]));
+    return true;
+  }
+  if (i < map.vertex_points) return false;  // boundary points
+  const Index v = i - map.vertex_points;
+  if (level.vertex_rule.empty() || level.vertex_rule[static_cast<std::size_t>(v)] != VertexRule::smooth) return false;
+  const auto edges = t.vertex_edges(v);
+  const int n = static_cast<int>(edges.size());
+  if (n == 0) return false;
+  Vec3 sum;
+  for (const Index e : edges) sum += at(t.other_vertex(e, v));
+  const double alpha = sqrt3_alpha(n);
+  out = (1.0 - alpha) * at(v) + (alpha / n) * sum;
+  return true;
+}
+
 }  // namespace
 
 const Scheme& sqrt3_scheme() {
@@ -107,6 +132,7 @@ const Scheme& sqrt3_scheme() {
              nullptr,
              vertex_point};
     s.boundary_point = boundary_point;
+    s.evaluate_point = evaluate_point;
     s.period = 2;  // the split turns the layout by 30 degrees on each step
     return s;
   }();

@@ -152,10 +152,16 @@ TEST(Sqrt3, WeightsGolden) {
 }
 
 // Every row sums to one over three steps on an open and a closed mesh, and
-// the fast path gives the stencils' positions.
+// the fast path gives the stencils' positions; also with a semi-sharp
+// corner, whose rule blends into the smooth one.
 TEST(Sqrt3, StencilRowsSumToOneAndTheFastPathAgrees) {
+  PolygonMesh semi_sharp = jittered(test::tetrahedron(), 6);
+  CornerTag corner;
+  corner.vertex = 0;
+  corner.sharpness = 1.5;
+  semi_sharp.tags.corners.push_back(corner);
   for (const PolygonMesh& mesh : {jittered(annulus(7), 3), jittered(test::triangle_grid(3, 2), 4),
-                                  jittered(test::tetrahedron(), 5)}) {
+                                  jittered(test::tetrahedron(), 5), semi_sharp}) {
     const std::vector<StencilTable> tables = refine_stencils(mesh, sqrt3_scheme(), levels(3));
     std::vector<Vec3> points = mesh.positions;
     for (const StencilTable& table : tables) {
