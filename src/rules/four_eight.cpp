@@ -39,7 +39,10 @@
 //   vertex point  W'_v = 1/2 W_v + 1/(2m) sum of F over v's m faces.
 // The masks below spell these out over the parent's vertices (for stencils
 // and the analysis); the fast path computes F and W first and then the
-// three sums, a quarter of the arithmetic of the wide masks.
+// three sums, about a third of the wide masks' multiply-adds (25 against 81
+// per child face on quads). The engine takes this scheme only on closed
+// manifold levels; an edge with other than two faces averages them here,
+// 1/2 (average of F over its faces), so the rules stay affine.
 
 #include "subdiv/rules/four_eight.h"
 
@@ -79,7 +82,8 @@ void two_step_face_point(const LevelView& level, Index f, MaskBuilder& mask) {
 void two_step_edge_point(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) {
   const MeshTopology& t = level.topology;
   for (const Index v : t.edge_vertices(e)) add_moved_vertex(t, v, 0.25, mask);
-  for (const Index c : t.edge_corners(e)) detail::add_face_average(level, t.corner_face(c), 0.25, mask);
+  const auto sides = t.edge_corners(e);
+  for (const Index c : sides) detail::add_face_average(level, t.corner_face(c), 0.5 / static_cast<double>(sides.size()), mask);
 }
 
 void two_step_vertex_point(const LevelView& level, Index v, VertexRule, MaskBuilder& mask) {
@@ -129,8 +133,10 @@ void two_step_positions(const MeshTopology& t, const SplitMap& map, std::span<co
     for (Index e = r.begin(); e != r.end(); ++e) {
       const auto [a, b] = t.edge_vertices(e);
       const auto sides = t.edge_corners(e);
-      const Vec3 faces = F[static_cast<std::size_t>(t.corner_face(sides[0]))] + F[static_cast<std::size_t>(t.corner_face(sides[1]))];
-      out[static_cast<std::size_t>(map.edge_point(e))] = 0.25 * (W[static_cast<std::size_t>(a)] + W[static_cast<std::size_t>(b)] + faces);
+      Vec3 faces;
+      for (const Index c : sides) faces += F[static_cast<std::size_t>(t.corner_face(c))];
+      out[static_cast<std::size_t>(map.edge_point(e))] = 0.25 * (W[static_cast<std::size_t>(a)] + W[static_cast<std::size_t>(b)]) +
+                                                        faces * (0.5 / static_cast<double>(sides.size()));
     }
   });
   tbb::parallel_for(tbb::blocked_range<Index>(0, nv, grain), [&](const tbb::blocked_range<Index>& r) {
