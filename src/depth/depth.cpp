@@ -240,6 +240,14 @@ bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& opti
 }
 
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
+  // Two steps of 4-8 are a quad-split scheme's level (Scheme::two_steps):
+  // the bound is that scheme's, counted in levels of two steps.
+  if (scheme.two_steps) {
+    DepthBound bound = depth_bound(mesh, *scheme.two_steps, options);
+    bound.scheme = std::string(scheme.name);
+    bound.steps_per_level = 2;
+    return bound;
+  }
   if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no depth bound for composite schemes yet: it needs limit positions");
   if (scheme.split == SplitRule::dual) return dual_depth_bound(mesh, scheme, options);
   if (!is_primal(scheme.split))
@@ -287,6 +295,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
 }
 
 std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme, int levels) {
+  if (scheme.two_steps) return level_costs(mesh, *scheme.two_steps, levels);  // levels of two steps, as its bound
   const MeshTopology t(mesh);
   LevelCost cost{0, mesh.vertex_count(), mesh.face_count(), t.edge_count(), mesh.corner_count(), 0};
   // Dual split: boundary and V-face counts of the current level.
@@ -348,11 +357,12 @@ DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   check.depth = depth;
   check.bound = bound.at(depth);
   const LimitOptions limit = limit_options(options);
+  const int steps = bound.steps_per_level;  // refined and measured with the scheme's own steps and limits
   if (depth > 0) {
-    const PolygonMesh previous = refined(mesh, scheme, options, depth - 1);
+    const PolygonMesh previous = refined(mesh, scheme, options, steps * (depth - 1));
     check.has_previous = true;
     check.measured_previous = limit_distances(previous, scheme, limit).max;
-    const LimitDistances at_depth = limit_distances(refined(previous, scheme, options, 1), scheme, limit);
+    const LimitDistances at_depth = limit_distances(refined(previous, scheme, options, steps), scheme, limit);
     check.measured = at_depth.max;
     check.approximated = at_depth.approximated;
   } else {

@@ -496,6 +496,11 @@ run depth-doo-sabin 0 depth "$meshes/cube.obj" -s doo-sabin --eps 0.01 --verify 
   stdout_has depth-doo-sabin "bound (paper (regular) + local subdivision matrix (extraordinary)): distance to the limit after k >= 2 steps" &&
   stdout_has depth-doo-sabin "(worst at a face of 3 sides)" && stdout_has depth-doo-sabin "     4           1536           1538" &&
   stdout_has depth-doo-sabin "verify: after 4 steps" && stdout_has depth-doo-sabin ": within"
+# four-eight: levels of two steps (its two-step quad split), verified with its own steps and limits.
+run depth-four-eight 0 depth "$meshes/cube.obj" -s four-eight --eps 0.01 --verify &&
+  stdout_has depth-four-eight "depth for accuracy 0.01: 5" && stdout_has depth-four-eight "refine -l 10" &&
+  stdout_has depth-four-eight "     5           6146           6144" && stdout_has depth-four-eight "verify: after 10 steps" &&
+  stdout_has depth-four-eight ": within"
 run depth-butterfly 1 depth "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 && stderr_one_line depth-butterfly &&
   stderr_has depth-butterfly "butterfly: no depth bound for an interpolating scheme"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/square.obj"

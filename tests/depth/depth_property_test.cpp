@@ -16,6 +16,7 @@
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/triangulate.h"
+#include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/loop.h"
 #include "subdiv/rules/scheme.h"
 #include "depth/depth_test_meshes.h"
@@ -157,6 +158,45 @@ TEST(DepthCost, CountsMatchRefinement) {
       EXPECT_EQ(cost.corners, level.corner_count()) << scheme_name << " level " << cost.level;
       level = refine(level, scheme);
     }
+  }
+}
+
+// Four-eight: bounded through its two-step scheme (a quad split), in
+// levels of two steps. Checked with four-eight's own steps and limits (the
+// sqrt2 analysis' masks; the bound's amplitude comes from the quad-split
+// scheme's): the bound holds at every level on closed meshes, perturbed
+// too, and the level costs are the refined meshes' sizes.
+void check_four_eight_bound_holds(const PolygonMesh& mesh, const std::string& name) {
+  const Scheme& scheme = four_eight_scheme();
+  const DepthBound bound = depth_bound(mesh, scheme);
+  ASSERT_EQ(bound.steps_per_level, 2) << name;
+  const int last = bound.start + 2;
+  const std::vector<LevelCost> costs = level_costs(mesh, scheme, last);
+  RefineOptions two;
+  two.levels = 2;
+  PolygonMesh level = mesh;
+  for (int k = 0; k <= last; ++k) {
+    EXPECT_EQ(costs[static_cast<std::size_t>(k)].vertices, level.vertex_count()) << name << " level " << k;
+    EXPECT_EQ(costs[static_cast<std::size_t>(k)].faces, level.face_count()) << name << " level " << k;
+    if (k >= bound.start) {
+      EXPECT_LE(limit_distances(level, scheme).max, bound.at(k) * (1.0 + 1e-12)) << name << " level " << k;
+    }
+    if (k < last) level = refine(level, scheme, two);
+  }
+  const DepthCheck check = check_depth(mesh, scheme, bound, bound.start + 1);
+  EXPECT_LE(check.measured, check.bound * (1.0 + 1e-12)) << name;
+}
+
+TEST(DepthProperty, FourEightInLevelsOfTwoSteps) {
+  for (const char* file : {"cube.obj", "tetrahedron.obj", "spot_control_mesh.obj"})
+    check_four_eight_bound_holds(read_mesh(test::bundled_path(file)).mesh, file);
+  const std::string dir = test::shared_mesh_dir();
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "shared mesh collection not found at " << dir;
+  std::mt19937 random(2025);
+  for (const char* file : {"opensubdiv/catmark_torus.obj", "cgal/3torus.obj"}) {
+    const PolygonMesh mesh = read_mesh(dir + "/" + file).mesh;
+    check_four_eight_bound_holds(mesh, file);
+    check_four_eight_bound_holds(perturbed(mesh, 0.05 * largest_extent(mesh), random), std::string(file) + " (perturbed)");
   }
 }
 

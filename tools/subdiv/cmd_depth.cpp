@@ -36,9 +36,11 @@ struct DepthCommandOptions {
 };
 
 void print_bound(const DepthBound& bound, double eps) {
-  std::printf("bound (%s): distance to the limit after k >= %d steps <= max of\n", bound.source.c_str(), bound.start);
+  std::printf("bound (%s): distance to the limit after k >= %d %s <= max of\n", bound.source.c_str(), bound.start,
+              bound.steps_per_level > 1 ? "levels" : "steps");
   for (const DepthTerm& term : bound.terms) {
-    const DepthBound alone{bound.scheme, bound.source, bound.start, {term}};
+    DepthBound alone = bound;
+    alone.terms = {term};
     std::printf("  %.6g x %.6g^(k - %d)   (alone: depth %d)   %s\n", term.amplitude, term.rate, bound.start,
                 alone.depth_for(eps), term.what.c_str());
   }
@@ -72,7 +74,11 @@ int run_depth(const DepthCommandOptions& opt) {
   std::printf("%s: %d vertices, %d faces, scheme %s\n", opt.input.c_str(), file.mesh.vertex_count(),
               file.mesh.face_count(), std::string(scheme.name).c_str());
   print_bound(bound, opt.eps);
+  const int steps = bound.steps_per_level;
   std::printf("\ndepth for accuracy %g: %d (bound there: %.6g)\n", opt.eps, depth, bound.at(depth));
+  if (steps > 1)
+    std::printf("levels count %d %s steps each (its two-step quad split): refine -l %d\n", steps,
+                std::string(scheme.name).c_str(), steps * depth);
   print_costs(level_costs(file.mesh, scheme, depth));
   print_trade_off(bound, opt.eps);
 
@@ -86,9 +92,9 @@ int run_depth(const DepthCommandOptions& opt) {
                               "verify a larger --eps");
     const DepthCheck check = check_depth(file.mesh, scheme, bound, depth, options);
     std::printf("\nverify: after %d steps the largest vertex-to-limit distance is %.6g (bound %.6g, accuracy %g): %s\n",
-                depth, check.measured, check.bound, opt.eps, check.measured <= opt.eps ? "within" : "NOT within");
+                steps * depth, check.measured, check.bound, opt.eps, check.measured <= opt.eps ? "within" : "NOT within");
     if (check.has_previous)
-      std::printf("verify: after %d steps it is %.6g: depth %d %s\n", depth - 1, check.measured_previous, depth - 1,
+      std::printf("verify: after %d steps it is %.6g: depth %d %s\n", steps * (depth - 1), check.measured_previous, depth - 1,
                   check.measured_previous <= opt.eps ? "would already have been enough (the bound is not tight)"
                                                      : "would not have been enough (the bound is tight)");
     if (check.approximated > 0)

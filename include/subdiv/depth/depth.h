@@ -23,7 +23,9 @@ struct DepthOptions {
 /// analysis where the paper's argument does not reach (Catmull-Clark);
 /// every other scheme from the analysis alone: the largest distance of a
 /// control vertex to its limit, contracted per step by the slowest rate
-/// among the configurations present (docs/design.md, "Depth").
+/// among the configurations present (docs/design.md, "Depth"). A scheme
+/// with a two-step scheme (Scheme::two_steps: 4-8) is bounded through it,
+/// in levels of two steps (DepthBound::steps_per_level).
 /// Throws as refine() does for meshes it cannot refine.
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options = {});
 
@@ -46,21 +48,23 @@ struct LevelCost {
   std::int64_t bytes = 0;
 };
 
-/// Levels 0 .. `levels` of `mesh` under `scheme`'s split.
+/// Levels 0 .. `levels` of `mesh` under `scheme`'s split (4-8: levels of
+/// two steps, as its bound counts them).
 std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme, int levels);
 
 struct DepthCheck {
   int depth = 0;
   double bound = 0.0;     ///< the bound at `depth`
-  double measured = 0.0;  ///< largest vertex-to-limit distance after `depth` steps
+  double measured = 0.0;  ///< largest vertex-to-limit distance after `depth` levels
   /// The same one step less (when depth > 0): was depth - 1 already enough?
   bool has_previous = false;
   double measured_previous = 0.0;
   Index approximated = 0;  ///< vertices whose limit is only approximated at `depth`
 };
 
-/// Refines `depth` steps (and depth - 1) and measures every vertex's distance
-/// to its limit position.
+/// Refines `depth` levels (and depth - 1) of bound.steps_per_level steps
+/// each and measures every vertex's distance to its limit position, both
+/// with the scheme's own steps and limits.
 DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const DepthBound& bound, int depth,
                        const DepthOptions& options = {});
 

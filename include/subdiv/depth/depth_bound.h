@@ -29,6 +29,10 @@ struct DepthBound {
   std::string source;
   int start = 0;
   std::vector<DepthTerm> terms;
+  /// Refinement steps per level of the bound: 1, or 2 for a scheme bounded
+  /// through its two-step scheme (Scheme::two_steps: 4-8, whose levels are
+  /// then quad splits, two of its steps each).
+  int steps_per_level = 1;
 
   /// The bound on the vertex-to-limit distance after `level` steps; infinite
   /// for level < start (nothing is claimed there).
