@@ -56,7 +56,7 @@ struct DepthCheck {
   int depth = 0;
   double bound = 0.0;     ///< the bound at `depth`
   double measured = 0.0;  ///< largest vertex-to-limit distance after `depth` levels
-  /// The same one step less (when depth > 0): was depth - 1 already enough?
+  /// The same one level less (when depth > 0): was depth - 1 already enough?
   bool has_previous = false;
   double measured_previous = 0.0;
   Index approximated = 0;  ///< vertices whose limit is only approximated at `depth`
