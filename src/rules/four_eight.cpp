@@ -39,8 +39,8 @@
 //   vertex point  W'_v = 1/2 W_v + 1/(2m) sum of F over v's m faces.
 // The masks below spell these out over the parent's vertices (for stencils
 // and the analysis); the fast path computes F and W first and then the
-// three sums, about a third of the wide masks' multiply-adds (25 against 81
-// per child face on quads). The engine takes this scheme only on closed
+// three sums, about a third of the wide masks' multiply-adds (27 against 81
+// per parent face on closed quads). The engine takes this scheme only on closed
 // manifold levels; an edge with other than two faces averages them here,
 // 1/2 (average of F over its faces), so the rules stay affine.
 
