@@ -102,17 +102,24 @@ void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const 
   });
 }
 
-// The same over every child vertex, face points first: edge and vertex masks
-// may weight the new face points (MaskBuilder), which must exist by then;
-// or last, where face masks weight the new edge points.
+// Runs range(begin, end) over every child vertex in the masks' order: face
+// points first, since edge and vertex masks may weight the new face points
+// (MaskBuilder), which must exist by then; or last, where face masks weight
+// the new edge points.
+template <typename Range>
+void in_mask_order(const Scheme& scheme, const SplitMap& map, Range&& range) {
+  if (scheme.face_points_read_edge_points) {
+    range(map.edge_points, map.child_vertex_count);
+    return range(0, map.edge_points);
+  }
+  range(0, map.edge_points);
+  range(map.edge_points, map.child_vertex_count);
+}
+
+// for_each_child_mask over every child vertex, in the masks' order.
 template <typename Fn>
 void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Fn&& fn) {
-  if (scheme.face_points_read_edge_points) {
-    for_each_child_mask(parent, scheme, map, map.edge_points, map.child_vertex_count, fn);
-    return for_each_child_mask(parent, scheme, map, 0, map.edge_points, fn);
-  }
-  for_each_child_mask(parent, scheme, map, 0, map.edge_points, fn);
-  for_each_child_mask(parent, scheme, map, map.edge_points, map.child_vertex_count, fn);
+  in_mask_order(scheme, map, [&](Index begin, Index end) { for_each_child_mask(parent, scheme, map, begin, end, fn); });
 }
 
 struct Level {
@@ -287,7 +294,7 @@ void evaluate_points(const PolygonMesh& parent, const Scheme& scheme, const Pare
   const SplitMap& map = level.map;
   std::span<const Vec3> in = parent.positions;
   std::span<Vec3> out = level.child.positions;
-  auto range = [&](Index begin, Index end) {
+  in_mask_order(scheme, map, [&](Index begin, Index end) {
     tbb::parallel_for(tbb::blocked_range<Index>(begin, end, 2048), [&](const tbb::blocked_range<Index>& r) {
       MaskBuilder mask;
       mask.reserve(64);
@@ -298,13 +305,7 @@ void evaluate_points(const PolygonMesh& parent, const Scheme& scheme, const Pare
         p = apply_mask(mask, map, in.data(), out.data());
       }
     });
-  };
-  if (scheme.face_points_read_edge_points) {
-    range(map.edge_points, map.child_vertex_count);
-    return range(0, map.edge_points);
-  }
-  range(0, map.edge_points);
-  range(map.edge_points, map.child_vertex_count);
+  });
 }
 
 void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const ParentLevel& view, Level& level) {
