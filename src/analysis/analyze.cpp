@@ -11,6 +11,7 @@ namespace subdiv {
 const char* to_string(SmoothnessVerdict v) {
   switch (v) {
     case SmoothnessVerdict::c1: return "C1";
+    case SmoothnessVerdict::not_c1: return "not C1";
     case SmoothnessVerdict::not_tangent_plane_continuous: return "not tangent-plane continuous";
     case SmoothnessVerdict::inconclusive: return "inconclusive";
   }
@@ -111,9 +112,9 @@ bool collapses_boundary(const LocalSubdivisionMatrix& m, const Eigen::VectorXd& 
   return true;
 }
 
-}  // namespace
-
-ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration, const AnalysisOptions& options) {
+// Everything at the configuration itself: Reif's criterion.
+ConfigurationAnalysis analyze_point(const Scheme& scheme, const Configuration& configuration,
+                                    const AnalysisOptions& options) {
   ConfigurationAnalysis a;
   a.matrix = invariant_subdivision_matrix(scheme, configuration, options.max_rings, options.rules);
   if (!a.matrix.invariant) {
@@ -159,6 +160,26 @@ ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configu
     if (!a.characteristic_map->regular && collapses_boundary(a.wide_matrix, pair->vectors[0], pair->vectors[1]))
       a.reason += "; the subdominant eigenvectors vanish on the boundary curve (lambda_1, lambda_2 are not the "
                   "curve's eigenvalues), so the map collapses the boundary to the centre";
+  }
+  return a;
+}
+
+}  // namespace
+
+ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration, const AnalysisOptions& options) {
+  ConfigurationAnalysis a = analyze_point(scheme, configuration, options);
+  a.regular = regular_smoothness_of(scheme, options.rules, configuration.kind != Configuration::Kind::interior);
+  a.configuration_reason = a.reason;
+  // Reif's criterion presumes the surface C1 away from the centre: the
+  // regular rules' own verdict decides that part.
+  if (a.regular.verdict == SmoothnessVerdict::not_c1) {
+    a.verdict = SmoothnessVerdict::not_c1;
+    a.reason = a.regular.reason + "; at the configuration: " + a.reason;
+  } else if (a.verdict == SmoothnessVerdict::c1) {
+    if (a.regular.verdict != SmoothnessVerdict::c1) a.verdict = SmoothnessVerdict::inconclusive;
+    a.reason += "; " + a.regular.reason;
+  } else {
+    a.reason += "; " + a.regular.reason;
   }
   return a;
 }

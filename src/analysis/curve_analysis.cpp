@@ -40,9 +40,8 @@ std::optional<Eigen::MatrixXd> neighbourhood_matrix(const StencilTable& table, I
   return S;
 }
 
-}  // namespace
-
-CurveAnalysis analyze_curve(const CurveScheme& scheme, double tolerance) {
+// The masks, the spectrum and the point's own conditions (a.c1: they hold).
+CurveAnalysis analyze_curve_point(const CurveScheme& scheme, double tolerance) {
   // A closed polygon long enough that no mask wraps into the neighbourhood.
   const Index points = 8 * kMaxHalfWidth;
   const Index centre = points / 2;
@@ -105,6 +104,21 @@ CurveAnalysis analyze_curve(const CurveScheme& scheme, double tolerance) {
   }
   a.c1 = true;
   a.reason = "lambda_1 simple and dominant, characteristic map monotone";
+  return a;
+}
+
+}  // namespace
+
+CurveAnalysis analyze_curve(const CurveScheme& scheme, double tolerance) {
+  CurveAnalysis a = analyze_curve_point(scheme, tolerance);
+  a.regular = regular_smoothness(curve_lattice_rule(scheme));
+  const std::string at_point = "at a point: " + a.reason;
+  if (a.regular.verdict == SmoothnessVerdict::c1 && !a.c1)
+    a.verdict = SmoothnessVerdict::inconclusive;  // the two routes disagree: say so, claim nothing
+  else
+    a.verdict = a.regular.verdict;
+  a.c1 = a.verdict == SmoothnessVerdict::c1;
+  a.reason = a.regular.reason + "; " + at_point;
   return a;
 }
 

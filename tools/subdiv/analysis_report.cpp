@@ -24,6 +24,12 @@ const char* kind_name(Configuration::Kind kind) {
 
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
 
+nlohmann::json regular_json(const RegularSmoothness& r) {
+  return {{"verdict", to_string(r.verdict)}, {"reason", r.reason},     {"critical", r.critical},
+          {"lower", r.lower},                 {"upper", r.upper},       {"lower_length", r.lower_length},
+          {"upper_length", r.upper_length},   {"window", r.window},     {"digits", r.digits}};
+}
+
 // The leading eigenvalue i (0 = the dominant one), or nothing when the
 // analysis stopped before the spectrum.
 const std::complex<double>* leading(const ConfigurationAnalysis& a, std::size_t i) {
@@ -91,6 +97,7 @@ nlohmann::json configuration_json(const ConfigurationAnalysis& a) {
   }
   j["verdict"] = to_string(a.verdict);
   j["reason"] = a.reason;
+  j["regular"] = regular_json(a.regular);
   j["curvature"] = to_string(a.curvature);
   return j;
 }
@@ -138,12 +145,17 @@ std::string format_analysis_table(std::string_view scheme, const std::vector<Con
     while (!line.empty() && line.back() == ' ') line.pop_back();
     out += line + "\n";
   }
+  // Every configuration's verdict rests on the same regular rules.
+  if (!results.empty()) out += fmt::format("\n{}\n", results.front().regular.reason);
   bool first = true;
   for (const ConfigurationAnalysis& a : results) {
     if (a.verdict == SmoothnessVerdict::c1) continue;
     if (first) out += "\n";
     first = false;
-    out += fmt::format("{}: {}\n", a.matrix.configuration.name(), a.reason);
+    out += fmt::format("{}: {}", a.matrix.configuration.name(), a.configuration_reason);
+    if (a.regular.verdict != SmoothnessVerdict::c1)
+      out += fmt::format("; regular rules {} (above)", to_string(a.regular.verdict));
+    out += "\n";
   }
   return out;
 }
@@ -174,7 +186,7 @@ std::string format_curve_analysis(std::string_view scheme, const CurveAnalysis& 
   out += fmt::format("masks over {} points; eigenvalues over {}:", a.S.rows(), a.wide_S.rows());
   for (const std::complex<double>& z : a.spectrum.expanded()) out += " " + format_complex(z);
   out += "\n";
-  out += fmt::format("verdict: {} ({})\n", a.c1 ? "C1" : "inconclusive", a.reason);
+  out += fmt::format("verdict: {} ({})\n", to_string(a.verdict), a.reason);
   if (a.leading.size() > 2 && a.c1) {
     const double l1 = a.leading[1].real();
     out += fmt::format("curvature: |lambda_2| = {:.6g} {} lambda_1^2 = {:.6g}\n", std::abs(a.leading[2]),
@@ -196,8 +208,9 @@ std::string curve_analysis_json(std::string_view scheme, const CurveAnalysis& a)
   nlohmann::json values = nlohmann::json::array();
   for (const std::complex<double>& z : a.spectrum.expanded()) values.push_back({{"re", z.real()}, {"im", z.imag()}});
   j["eigenvalues"] = values;
-  j["verdict"] = a.c1 ? "C1" : "inconclusive";
+  j["verdict"] = to_string(a.verdict);
   j["reason"] = a.reason;
+  j["regular"] = regular_json(a.regular);
   if (a.limit_mask) j["limit_mask"] = as_vector(*a.limit_mask);
   if (a.tangent_mask) j["tangent_mask"] = as_vector(*a.tangent_mask);
   return j.dump(2) + "\n";

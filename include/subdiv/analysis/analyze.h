@@ -12,18 +12,14 @@
 #include <vector>
 
 #include "subdiv/analysis/characteristic_map.h"
+#include "subdiv/analysis/regular_smoothness.h"
 #include "subdiv/analysis/spectrum.h"
 #include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/analysis/verdict.h"
 #include "subdiv/refine/refine.h"
 
 namespace subdiv {
 
-enum class SmoothnessVerdict {
-  c1,                              ///< Reif's criterion holds
-  not_tangent_plane_continuous,    ///< the subdominant eigenvalues rule it out
-  inconclusive,                    ///< a sufficient condition fails; see the reason
-};
-const char* to_string(SmoothnessVerdict);
 
 /// Proposition 6 (for lambda = lambda_1 = lambda_2): compare lambda^2 with
 /// the largest other eigenvalue magnitude mu.
@@ -53,8 +49,15 @@ struct ConfigurationAnalysis {
   /// > |lambda_3|, lambda_1 and lambda_2 real and positive, non-defective.
   bool eigenvalue_condition = false;
   std::optional<CharacteristicMap> characteristic_map;
+  /// The smoothness of the scheme's regular rules (interior, and at boundary
+  /// and corner configurations the straight boundary's too): Reif's
+  /// criterion at the configuration presumes them C1.
+  RegularSmoothness regular;
+  /// C1 when Reif's criterion holds at the configuration and the regular
+  /// rules are C1; not C1 when the regular rules are not.
   SmoothnessVerdict verdict = SmoothnessVerdict::inconclusive;
-  std::string reason;  ///< why the verdict, in one sentence
+  std::string reason;  ///< what the verdict rests on: the configuration's part and the regular rules'
+  std::string configuration_reason;  ///< the configuration's part alone (Reif's criterion)
   CurvatureBehaviour curvature = CurvatureBehaviour::not_applicable;
 };
 

@@ -3,9 +3,11 @@
 // example is the cubic B-spline's 5 x 5 matrix): the local subdivision
 // matrix at a regular point, read off the scheme's own recorded stencils on
 // a closed polygon, its spectrum, the limit and tangent masks, and the C1
-// verdict for curves: lambda_0 = 1 simple, a real simple lambda_1 in (0, 1)
-// above every other magnitude, and a strictly monotone eigenvector (the
-// one-dimensional characteristic map is injective).
+// verdict. A curve is regular everywhere, so the verdict is the regular
+// rules' (regular_smoothness.h: the difference test); the point's own
+// conditions must agree with it: lambda_0 = 1 simple, a real simple lambda_1
+// in (0, 1) above every other magnitude, and a strictly monotone eigenvector
+// (the one-dimensional characteristic map is injective).
 
 #include <Eigen/Core>
 #include <complex>
@@ -13,7 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "subdiv/analysis/regular_smoothness.h"
 #include "subdiv/analysis/spectrum.h"
+#include "subdiv/analysis/verdict.h"
 #include "subdiv/curves/curve_scheme.h"
 
 namespace subdiv {
@@ -36,8 +40,11 @@ struct CurveAnalysis {
   /// derivative per parent edge length). Empty when they do not exist.
   std::optional<Eigen::VectorXd> limit_mask;
   std::optional<Eigen::VectorXd> tangent_mask;
-  bool c1 = false;
-  std::string reason;
+  /// The difference test on the scheme's masks (decides the verdict).
+  RegularSmoothness regular;
+  SmoothnessVerdict verdict = SmoothnessVerdict::inconclusive;
+  bool c1 = false;     ///< verdict == c1
+  std::string reason;  ///< what the verdict rests on
 };
 
 /// Throws InvalidInputError when no neighbourhood up to 8 points on either
