@@ -41,7 +41,7 @@ CurveScheme four_point_scheme(double w) {
   const double b = -w / (1.0 - 4.0 * w);
   return CurveScheme{
       .name = "four-point",
-      .summary = "interpolating, primal; tension w (1/16: reproduces cubics, C1 for 0 < w < (sqrt 5 - 1)/8)",
+      .summary = "interpolating, primal; tension w (1/16: reproduces cubics; C1 for small w > 0, not from about 0.1927)",
       .citation =
           "N. Dyn, D. Levin, J. A. Gregory: A 4-point interpolatory subdivision scheme for curve design, Computer "
           "Aided Geometric Design 4(4):257-268, 1987",

@@ -224,6 +224,21 @@ run adaptive-kobbelt 1 adaptive "$meshes/cube.obj" -s kobbelt --eps 0.01 -o "$wo
   stderr_one_line adaptive-kobbelt && stderr_has adaptive-kobbelt "no adaptive refinement for an interpolating scheme"
 run adaptive-butterfly 1 adaptive "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 -o "$work/x.obj" &&
   stderr_one_line adaptive-butterfly && stderr_has adaptive-butterfly "no adaptive refinement for an interpolating scheme"
+# The regular rules' own test: four-point's and Kobbelt's tension sweeps.
+for w in 0.2 0.24 0.3; do
+  run "analyze-four-point-$w" 0 analyze -s four-point --tension "$w" &&
+    stdout_has "analyze-four-point-$w" "verdict: not C1 (regular rules not C1"
+done
+run analyze-four-point-default 0 analyze -s four-point && stdout_has analyze-four-point-default "verdict: C1 (regular rules C1"
+run analyze-four-point-json 0 analyze -s four-point --tension 0.3 --json &&
+  stdout_has analyze-four-point-json '"verdict": "not C1"' && stdout_has analyze-four-point-json '"lower_length"'
+run analyze-kobbelt-tension 0 analyze -s kobbelt --tension 0.3 -k 4
+grep -qE "^interior k=4 .* yes +yes +yes +not C1 " "$work/out" && pass || fail "analyze kobbelt 0.3: k=4 row"
+stdout_has analyze-kobbelt-tension "regular rules not C1"
+run analyze-loop-regular 0 analyze -s loop -k 6 && stdout_has analyze-loop-regular "regular rules C1"
+run analyze-bilinear 0 analyze -s bilinear -k 4 && grep -qE "^interior k=4 .* not C1 " "$work/out" && pass ||
+  fail "analyze bilinear: k=4 not C1"
+run analyze-loop-boundary-regular 0 analyze -s loop --boundary -k 2 && stdout_has analyze-loop-boundary-regular "boundary regular rules C1"
 run analyze-kobbelt 0 analyze -s kobbelt -k 3..12
 grep -qE "^interior k=4 +25 +2 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze kobbelt: k=4 row"
 [ "$(grep -cE "^interior k=[0-9]+ .* C1 " "$work/out")" = 10 ] && pass || fail "analyze kobbelt: not C1 at every valence"
