@@ -74,11 +74,12 @@ Eigen::Vector2d lattice_point(const RegularMesh& r, Index v) {
   return {r.mesh.positions[static_cast<std::size_t>(v)].x, r.mesh.positions[static_cast<std::size_t>(v)].y};
 }
 
+// The integer x is, to rounding.
 int rounded(double x, const std::string& what) {
   const double k = std::round(x);
   if (std::fabs(x - k) > 1e-6)
-    throw InvalidInputError(what + ": the children are not on a lattice (the rules do not reproduce linear functions, or the refined "
-                            "mesh is not regular there)");
+    throw InvalidInputError(what + ": the children are not on a lattice (the rules do not reproduce linear functions, "
+                            "or the refined mesh is not regular there)");
   return static_cast<int>(k);
 }
 
@@ -120,6 +121,7 @@ LatticeRule read_rule(const Scheme& scheme, const RefineOptions& rules, RegularM
     const double dist = d.squaredNorm() + 1e-9 * (d[0] < 0 ? 1 : 0) + 1e-10 * (d[1] < 0 ? 1 : 0);
     if (dist < best) best = dist, origin = c;
   }
+  if (!(best < 1e300)) throw InvalidInputError(what + ": no child on the boundary");
   const Eigen::Vector2d x0 = unwrap(x[static_cast<std::size_t>(origin)], middle, r);
 
   // Its neighbours in the child mesh, by angle from +x.
@@ -154,10 +156,12 @@ LatticeRule read_rule(const Scheme& scheme, const RefineOptions& rules, RegularM
   rule.description = what;
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b) rule.dilation[a][b] = rounded(to_child(a, b), what);
+  const auto& D = rule.dilation;
+  if (D[0][0] * D[1][1] - D[0][1] * D[1][0] <= 1) throw InvalidInputError(what + ": the children do not refine the lattice");
 
   // Weights keyed by (child row or -1 for the interior, offset c - M j).
   std::map<std::pair<int, std::array<int, 2>>, double> weights;
-  const int boundary_depth = 4;  // child rows keyed separately above the boundary
+  const int boundary_depth = 8;  // child rows keyed separately above the boundary
   for (Index c = 0; c < table.row_count(); ++c) {
     const Eigen::Vector2d xc = unwrap(x[static_cast<std::size_t>(c)], x0, r);
     if (!r.periodic_y && xc[1] > r.rows / 2.0) continue;  // the far boundary's children
