@@ -46,9 +46,8 @@ struct Neighbourhood {
   /// The matrix: row a is column a's child one level down.
   Eigen::MatrixXd S;
   /// Per column: the ring-mesh element whose child is column a's image one
-  /// level down (at half its layout point): a vertex {u, -1}, an edge
-  /// {x, y}, or (quad split) a face {-2 - f, -1}.
-  std::vector<std::array<Index, 2>> parent;
+  /// level down (at half its grid point).
+  std::vector<ImageParent> parent;
 
   bool inner(Index u) const {
     const int r = ring_of[static_cast<std::size_t>(u)];
@@ -72,7 +71,7 @@ struct Masks {
 // boundary interpolation and creasing method.
 Neighbourhood canonical_neighbourhood(SplitRule split, const LocalSubdivisionMatrix& m, BoundaryInterpolation boundary,
                                       CreaseMethod method) {
-  const RingMesh ring = ring_mesh(split, m.configuration, ring_mesh_size(m.rings));
+  const RingMesh ring = analysis_ring_mesh(split, m.configuration, ring_mesh_size(m.rings));
   Neighbourhood n{m.rings, MeshTopology(ring.mesh), {}, {}, {}, {}, kInvalidIndex, {}, {}};
   const MeshTopology& t = n.topology;
   const auto& positions = ring.mesh.positions;
@@ -96,29 +95,11 @@ Neighbourhood canonical_neighbourhood(SplitRule split, const LocalSubdivisionMat
   if (n.start == kInvalidIndex) throw InvalidInputError(m.configuration.name() + ": no face along the first ray");
   n.rule = compute_creasing(ring.mesh, t, boundary, method).vertex_rule;
   n.S = m.S;
-  // The parents of the image (one binary step halves the layout) are for
+  // The parents of the image (the elements at half their grid points) are for
   // match_neighbourhood's first-step check, which the sqrt3 and sqrt2
   // splits do not take (see there).
   if (!is_primal(split)) return n;
-  auto at = [](Vec3 a, Vec3 b) { return norm(a - b) < 1e-9; };
-  for (const Vec3& p : m.layout) {
-    const Vec3 half = 0.5 * p;
-    std::array<Index, 2> parent{kInvalidIndex, kInvalidIndex};
-    for (Index v = 0; v < t.vertex_count() && parent[0] == kInvalidIndex; ++v)
-      if (at(positions[static_cast<std::size_t>(v)], half)) parent = {v, kInvalidIndex};
-    for (Index e = 0; e < t.edge_count() && parent[0] == kInvalidIndex; ++e) {
-      const auto [x, y] = t.edge_vertices(e);
-      if (at(0.5 * (positions[static_cast<std::size_t>(x)] + positions[static_cast<std::size_t>(y)]), half)) parent = {x, y};
-    }
-    for (Index f = 0; f < t.face_count() && parent[0] == kInvalidIndex && split == SplitRule::quad; ++f) {
-      Vec3 centroid;
-      for (const Index v : t.face_vertices(f)) centroid += positions[static_cast<std::size_t>(v)];
-      if (at((1.0 / t.face_size(f)) * centroid, half)) parent = {-2 - f, kInvalidIndex};
-    }
-    if (parent[0] == kInvalidIndex)
-      throw InvalidInputError(m.configuration.name() + ": no ring-mesh element under a neighbourhood point's image");
-    n.parent.push_back(parent);
-  }
+  for (const Index u : n.column_vertex) n.parent.push_back(ring.image_parent[static_cast<std::size_t>(u)]);
   return n;
 }
 
@@ -380,16 +361,16 @@ std::optional<std::vector<Index>> match_neighbourhood(const GenericLevel& g, con
   const StencilTable& rows = g.step.rows();
   Eigen::VectorXd row(static_cast<Eigen::Index>(ring.size()));
   for (std::size_t a = 0; a < ring.size(); ++a) {
-    const auto [x, y] = n.parent[a];
+    const ImageParent& parent = n.parent[a];
     Index child = kInvalidIndex;
-    if (x < 0) {
-      const Index f = face_image[static_cast<std::size_t>(-2 - x)];
+    if (parent.kind == ImageParent::Kind::face) {
+      const Index f = face_image[static_cast<std::size_t>(parent.a)];
       if (f == kInvalidIndex) return std::nullopt;
       child = face_child(t, f);
-    } else if (y == kInvalidIndex) {
-      child = vertex_child(t, image[static_cast<std::size_t>(x)], g.quads);
+    } else if (parent.kind == ImageParent::Kind::vertex) {
+      child = vertex_child(t, image[static_cast<std::size_t>(parent.a)], g.quads);
     } else {
-      const Index e = t.find_edge(image[static_cast<std::size_t>(x)], image[static_cast<std::size_t>(y)]);
+      const Index e = t.find_edge(image[static_cast<std::size_t>(parent.a)], image[static_cast<std::size_t>(parent.b)]);
       if (e == kInvalidIndex) return std::nullopt;
       child = edge_child(t, e, g.quads);
     }
@@ -506,6 +487,11 @@ std::optional<GenericLimit> generic_limit(const GenericLevel& g, Index v, MaskCa
     return std::nullopt;
   }
   const int k = smooth_interior ? t.valence(v) : t.vertex_face_count(v);
+  // Interior k = 2 is the quad split's only (valence_two_ring_mesh): two
+  // triangles around an interior vertex share all three edges (the one
+  // opposite it is non-manifold, or the two are a closed component), and
+  // the sqrt3 and sqrt2 splits' two-step matrices need a linear layout.
+  if (smooth_interior && k == 2 && !(g.quads && g.primal)) return std::nullopt;
   const Masks& m = cache.at({smooth_interior ? Configuration::Kind::interior : Configuration::Kind::boundary, k});
   const Sector all{0, t.vertex_corners(v).size()};
   if (!m.limit || !m.neighbourhood) return std::nullopt;

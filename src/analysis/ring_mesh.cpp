@@ -42,20 +42,49 @@ namespace {
 // Grid points are keyed by (sector, i, j). Sector s owns its points with
 // j >= 1; a point on ray s (j = 0, i >= 1) belongs to sector s - 1 as
 // (0, i), except on the first ray of an open fan. The centre is (0, 0, 0).
+// The layout is linear in each sector, or (`polar`, for two sectors around
+// a vertex, which no linear layout separates) the point at radius i + j and
+// angle a (s + j / (i + j)) / sectors.
 class GridPoints {
  public:
-  GridPoints(int sectors, bool closed, double angle, PolygonMesh& mesh)
-      : sectors_(sectors), closed_(closed), angle_(angle), mesh_(mesh) {}
+  using Key = std::tuple<int, int, int>;
+
+  GridPoints(int sectors, bool closed, double angle, bool polar, PolygonMesh& mesh)
+      : sectors_(sectors), closed_(closed), polar_(polar), angle_(angle), mesh_(mesh) {}
 
   Index at(int s, int i, int j) {
-    if (i == 0 && j == 0) s = 0;
-    else if (j == 0 && (s > 0 || closed_)) std::tie(s, i, j) = std::tuple{(s + sectors_ - 1) % sectors_, 0, i};
-    const auto [it, added] = index_.try_emplace(std::tuple{s, i, j}, mesh_.vertex_count());
-    if (added) mesh_.positions.push_back(i * ray(s) + j * ray(s + 1));
+    const Key key = canonical(s, i, j);
+    const auto [it, added] = index_.try_emplace(key, mesh_.vertex_count());
+    if (added) {
+      mesh_.positions.push_back(place(key));
+      keys_.push_back(key);
+    }
     return it->second;
   }
 
+  /// The vertex at (s, i, j), kInvalidIndex when the mesh has none there.
+  Index find(int s, int i, int j) const {
+    const auto it = index_.find(canonical(s, i, j));
+    return it == index_.end() ? kInvalidIndex : it->second;
+  }
+
+  const Key& key(Index v) const { return keys_[static_cast<std::size_t>(v)]; }
+
  private:
+  Key canonical(int s, int i, int j) const {
+    if (i == 0 && j == 0) return {0, 0, 0};
+    if (j == 0 && (s > 0 || closed_)) return {(s + sectors_ - 1) % sectors_, 0, i};
+    return {s, i, j};
+  }
+
+  Vec3 place(const Key& key) const {
+    const auto [s, i, j] = key;
+    if (!polar_) return i * ray(s) + j * ray(s + 1);
+    if (i + j == 0) return {};
+    const double a = angle_ * (s + static_cast<double>(j) / (i + j)) / sectors_;
+    return (i + j) * Vec3{std::cos(a), std::sin(a), 0.0};
+  }
+
   Vec3 ray(int s) const {
     const double a = angle_ * s / sectors_;
     return {std::cos(a), std::sin(a), 0.0};
@@ -63,10 +92,80 @@ class GridPoints {
 
   int sectors_;
   bool closed_;
+  bool polar_;
   double angle_;
   PolygonMesh& mesh_;
-  std::map<std::tuple<int, int, int>, Index> index_;
+  std::map<Key, Index> index_;
+  std::vector<Key> keys_;  // per vertex
 };
+
+// Per vertex (s, i, j): the element at half its grid point, (i / 2, j / 2)
+// in sector s: a vertex, an edge (its ends), or, at the centre of a quad,
+// that quad (faces keyed by their corner (s, i, j) nearest the centre).
+std::vector<ImageParent> image_parents(const GridPoints& points, SplitRule split, Index vertices,
+                                       const std::map<GridPoints::Key, Index>& quads) {
+  std::vector<ImageParent> parents;
+  for (Index v = 0; v < vertices; ++v) {
+    const auto [s, i, j] = points.key(v);
+    const auto at = [&, s = s](int a, int b) { return points.find(s, a, b); };
+    ImageParent p;
+    if (i % 2 == 0 && j % 2 == 0) {
+      p = {ImageParent::Kind::vertex, at(i / 2, j / 2)};
+    } else if (i % 2 == 0 || j % 2 == 0) {
+      p = {ImageParent::Kind::edge, at(i / 2, j / 2), at((i + 1) / 2, (j + 1) / 2)};
+    } else if (split == SplitRule::triangle) {  // the diagonal of the grid cell
+      p = {ImageParent::Kind::edge, at((i + 1) / 2, (j - 1) / 2), at((i - 1) / 2, (j + 1) / 2)};
+    } else {
+      const auto it = quads.find({s, (i - 1) / 2, (j - 1) / 2});
+      p = {ImageParent::Kind::face, it == quads.end() ? kInvalidIndex : it->second};
+    }
+    if (p.a == kInvalidIndex || (p.kind == ImageParent::Kind::edge && p.b == kInvalidIndex))
+      throw InvalidInputError("ring mesh: no element under a grid point's image");
+    parents.push_back(p);
+  }
+  return parents;
+}
+
+// The grid layout of `ring_mesh` (`polar` for interior k = 2).
+RingMesh grid_ring_mesh(SplitRule split, const Configuration& configuration, int rings, bool polar) {
+  const int k = configuration.k;
+  const bool closed = configuration.kind == Configuration::Kind::interior;
+  if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
+  if (configuration.angle < 0.0 || configuration.angle >= 2.0 * std::numbers::pi)
+    throw InvalidInputError(configuration.name() + ": the corner angle must be in (0, 2 pi)");
+  // The layout only identifies vertices (rules never read positions), but a
+  // sector must stay a proper wedge: one face spanning pi or more (a single
+  // face at a boundary, a concave corner) is laid out with a quarter turn.
+  const double angle = polar || configuration.sector_angle() / k < 0.9 * std::numbers::pi
+                           ? configuration.sector_angle()
+                           : 0.5 * std::numbers::pi * k;
+  RingMesh ring;
+  GridPoints points(k, closed, angle, polar, ring.mesh);
+  std::map<GridPoints::Key, Index> quads;  // the quad split's faces by their corner nearest the centre
+  ring.centre = points.at(0, 0, 0);
+  for (int s = 0; s < k; ++s) {
+    if (split == SplitRule::quad || split == SplitRule::sqrt2) {
+      for (int i = 0; i < rings; ++i)
+        for (int j = 0; j < rings; ++j) {
+          quads.emplace(GridPoints::Key{s, i, j}, ring.mesh.face_count());
+          ring.mesh.add_face({points.at(s, i, j), points.at(s, i + 1, j), points.at(s, i + 1, j + 1), points.at(s, i, j + 1)});
+        }
+    } else {
+      for (int i = 0; i < rings; ++i)
+        for (int j = 0; i + j < rings; ++j) {
+          ring.mesh.add_face({points.at(s, i, j), points.at(s, i + 1, j), points.at(s, i, j + 1)});
+          if (i + j + 1 < rings)
+            ring.mesh.add_face({points.at(s, i + 1, j), points.at(s, i + 1, j + 1), points.at(s, i, j + 1)});
+        }
+    }
+  }
+  if (configuration.kind == Configuration::Kind::corner)
+    ring.mesh.tags.corners.push_back(
+        {ring.centre, kInfiniteSharpness, configuration.corner, configuration.sector_angle()});
+  ring.linear = !polar;
+  if (is_primal(split)) ring.image_parent = image_parents(points, split, ring.mesh.vertex_count(), quads);
+  return ring;
+}
 
 }  // namespace
 
@@ -311,39 +410,27 @@ RingMesh ring_mesh(SplitRule split, const Configuration& configuration, int ring
     if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
     return dual_ring_mesh(configuration, rings);
   }
-  const int k = configuration.k;
   const bool closed = configuration.kind == Configuration::Kind::interior;
-  if (k < (closed ? 3 : 1))
-    throw InvalidInputError(configuration.name() + ": needs k >= " + std::string(closed ? "3" : "1"));
-  if (rings < 1) throw InvalidInputError("ring mesh: rings must be >= 1, not " + std::to_string(rings));
-  if (configuration.angle < 0.0 || configuration.angle >= 2.0 * std::numbers::pi)
-    throw InvalidInputError(configuration.name() + ": the corner angle must be in (0, 2 pi)");
-  // The layout only identifies vertices (rules never read positions), but a
-  // sector must stay a proper wedge: one face spanning pi or more (a single
-  // face at a boundary, a concave corner) is laid out with a quarter turn.
-  const double angle = configuration.sector_angle() / k < 0.9 * std::numbers::pi ? configuration.sector_angle()
-                                                                                   : 0.5 * std::numbers::pi * k;
-  RingMesh ring;
-  GridPoints points(k, closed, angle, ring.mesh);
-  ring.centre = points.at(0, 0, 0);
-  for (int s = 0; s < k; ++s) {
-    if (split == SplitRule::quad || split == SplitRule::sqrt2) {
-      for (int i = 0; i < rings; ++i)
-        for (int j = 0; j < rings; ++j)
-          ring.mesh.add_face({points.at(s, i, j), points.at(s, i + 1, j), points.at(s, i + 1, j + 1), points.at(s, i, j + 1)});
-    } else {
-      for (int i = 0; i < rings; ++i)
-        for (int j = 0; i + j < rings; ++j) {
-          ring.mesh.add_face({points.at(s, i, j), points.at(s, i + 1, j), points.at(s, i, j + 1)});
-          if (i + j + 1 < rings)
-            ring.mesh.add_face({points.at(s, i + 1, j), points.at(s, i + 1, j + 1), points.at(s, i, j + 1)});
-        }
-    }
-  }
-  if (configuration.kind == Configuration::Kind::corner)
-    ring.mesh.tags.corners.push_back(
-        {ring.centre, kInfiniteSharpness, configuration.corner, configuration.sector_angle()});
-  return ring;
+  if (configuration.k < (closed ? 3 : 1))
+    throw InvalidInputError(configuration.name() + ": needs k >= " + std::string(closed ? "3" : "1") +
+                            (closed && configuration.k == 2 ? " for a layout linear in each sector" : ""));
+  return grid_ring_mesh(split, configuration, rings, false);
+}
+
+RingMesh valence_two_ring_mesh(SplitRule split, int rings) {
+  if (split == SplitRule::triangle)
+    throw InvalidInputError("interior k=2: two triangles around a vertex share all three edges (the one opposite it "
+                            "is non-manifold, or the two are a closed component): no configuration for the triangle split");
+  if (split != SplitRule::quad)
+    throw InvalidInputError(std::string("interior k=2: a vertex with two faces is analysed for the quad split only, not the ") +
+                            to_string(split));
+  return grid_ring_mesh(split, {Configuration::Kind::interior, 2}, rings, true);
+}
+
+RingMesh analysis_ring_mesh(SplitRule split, const Configuration& configuration, int rings) {
+  if (configuration.kind == Configuration::Kind::interior && configuration.k == 2)
+    return valence_two_ring_mesh(split, rings);
+  return ring_mesh(split, configuration, rings);
 }
 
 }  // namespace subdiv

@@ -32,6 +32,22 @@ Index vertex_at(const std::vector<Vec3>& points, const std::vector<Index>& candi
   return kInvalidIndex;
 }
 
+// The child of `parent` in the quad split's numbering [face points | edge
+// points | vertex points] or the triangle split's [edge points | vertex
+// points].
+Index image_child(const MeshTopology& t, SplitRule split, const ImageParent& parent) {
+  const Index faces = split == SplitRule::quad ? t.face_count() : 0;
+  switch (parent.kind) {
+    case ImageParent::Kind::face: return parent.a;
+    case ImageParent::Kind::edge: {
+      const Index e = t.find_edge(parent.a, parent.b);
+      return e == kInvalidIndex ? kInvalidIndex : faces + e;
+    }
+    case ImageParent::Kind::vertex: return faces + t.edge_count() + parent.a;
+  }
+  return kInvalidIndex;
+}
+
 double angle_of(Vec3 p) {
   const double a = std::atan2(p.y, p.x);
   return a < -kLayoutTolerance ? a + 2.0 * std::numbers::pi : std::max(a, 0.0);
@@ -60,7 +76,7 @@ std::vector<int> vertex_rings(const MeshTopology& topology, std::span<const Inde
 LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings,
                                                 const RefineOptions& rules) {
   if (rings < 1) throw InvalidInputError("subdivision matrix: rings must be >= 1, not " + std::to_string(rings));
-  const RingMesh ring = ring_mesh(scheme.split, configuration, ring_mesh_size(rings));
+  const RingMesh ring = analysis_ring_mesh(scheme.split, configuration, ring_mesh_size(rings));
   const MeshTopology topology(ring.mesh);
   const std::vector<int> ring_number = face_rings(topology, ring, rings);
 
@@ -91,10 +107,20 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
   Scheme open = scheme;  // the ring mesh's outer boundary lies outside the neighbourhood
   open.needs_closed_mesh = false;
   const StencilTable table = refine_stencil_table(ring.mesh, open, once);
-  const std::vector<Vec3> layout_child = child_layout(scheme.split, ring, scheme.period);
+  // A layout that is not linear (interior k = 2) names the images by the
+  // split's numbering instead, one step down.
+  if (!ring.linear && scheme.period != 1)
+    throw InvalidInputError(std::string(scheme.name) + ": " + configuration.name() +
+                            " is analysed one refinement step at a time, not over a period of " +
+                            std::to_string(scheme.period));
+  const std::vector<Vec3> layout_child = ring.linear ? child_layout(scheme.split, ring, scheme.period) : std::vector<Vec3>{};
   const double shrink = std::pow(arity(scheme.split), -scheme.period);
   std::vector<Index> all_child(layout_child.size());
   std::iota(all_child.begin(), all_child.end(), 0);
+  const auto image_of = [&](Index v) {
+    if (ring.linear) return vertex_at(layout_child, all_child, shrink * positions[static_cast<std::size_t>(v)]);
+    return image_child(topology, scheme.split, ring.image_parent[static_cast<std::size_t>(v)]);
+  };
 
   LocalSubdivisionMatrix m;
   m.configuration = configuration;
@@ -107,7 +133,7 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
     const Vec3 p = positions[static_cast<std::size_t>(coarse[static_cast<std::size_t>(a)])];
     m.layout.push_back(p);
     m.ring_of.push_back(ring_number[static_cast<std::size_t>(coarse[static_cast<std::size_t>(a)])]);
-    const Index child = vertex_at(layout_child, all_child, shrink * p);
+    const Index child = image_of(coarse[static_cast<std::size_t>(a)]);
     if (child == kInvalidIndex) throw InvalidInputError(configuration.name() + ": no child vertex at a neighbourhood point");
     const auto vertices = table.row_vertices(child);
     const auto weights = table.row_weights(child);

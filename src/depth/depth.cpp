@@ -7,7 +7,6 @@
 #include <cmath>
 #include <map>
 #include <optional>
-#include <set>
 #include <string>
 
 #include "subdiv/analysis/analyze.h"
@@ -56,26 +55,27 @@ double configuration_rate(const Scheme& scheme, const Configuration& c) {
   return std::abs(a.leading[index]);
 }
 
-// The configurations of the mesh's vertices, and the regular ones that
-// refinement creates everywhere.
-std::set<std::pair<int, int>> configurations_present(const PolygonMesh& mesh, const Scheme& scheme) {
+// The configurations of the mesh's vertices, each with a vertex that has it
+// (kInvalidIndex for the regular ones that refinement creates everywhere).
+std::map<std::pair<int, int>, Index> configurations_present(const PolygonMesh& mesh, const Scheme& scheme) {
   const MeshTopology t(mesh);
   const int regular = regular_faces(scheme);
-  std::set<std::pair<int, int>> present{{static_cast<int>(Configuration::Kind::interior), regular}};
+  std::map<std::pair<int, int>, Index> present{{{static_cast<int>(Configuration::Kind::interior), regular}, kInvalidIndex}};
   bool has_boundary = false;
   for (Index v = 0; v < t.vertex_count(); ++v) {
     const int faces = t.vertex_face_count(v);
     if (t.vertex_kind(v) == VertexKind::interior) {
-      present.insert({static_cast<int>(Configuration::Kind::interior), faces});
+      present.try_emplace({static_cast<int>(Configuration::Kind::interior), faces}, v);
     } else if (t.vertex_kind(v) == VertexKind::boundary) {
       has_boundary = true;
       // A boundary vertex with one face is a corner under every boundary rule
       // that moves boundary vertices along the boundary curve.
-      present.insert(faces == 1 ? std::pair{static_cast<int>(Configuration::Kind::corner), 1}
-                                : std::pair{static_cast<int>(Configuration::Kind::boundary), faces});
+      present.try_emplace(faces == 1 ? std::pair{static_cast<int>(Configuration::Kind::corner), 1}
+                                     : std::pair{static_cast<int>(Configuration::Kind::boundary), faces},
+                          v);
     }
   }
-  if (has_boundary) present.insert({static_cast<int>(Configuration::Kind::boundary), regular / 2});
+  if (has_boundary) present.try_emplace({static_cast<int>(Configuration::Kind::boundary), regular / 2}, kInvalidIndex);
   return present;
 }
 
@@ -84,16 +84,43 @@ struct WorstRate {
   std::string where;
 };
 
+// Where the bound starts: the control mesh, or its refinement `start` steps
+// down, whose vertex points are numbered last (docs/design.md,
+// "Refinement"), so control vertex v is vertex (count - control count) + v.
+struct StartLevel {
+  const PolygonMesh& mesh;
+  Index control_vertices = 0;
+  int start = 0;
+  const SourceLines* lines = nullptr;
+
+  // "file:line: vertex V" for a vertex of the start level.
+  std::string vertex_name(Index v) const {
+    const Index control = v - (mesh.vertex_count() - control_vertices);
+    if (control < 0)
+      return "vertex " + std::to_string(v) + " of the mesh after " + std::to_string(start) + " step";
+    return where(lines, &SourceLines::vertex_lines, static_cast<std::size_t>(control)) + "vertex " +
+           std::to_string(control);
+  }
+};
+
 // The slowest rate among the configurations present; `extraordinary_only`
-// leaves the regular ones out.
-WorstRate worst_rate(const PolygonMesh& mesh, const Scheme& scheme, bool extraordinary_only) {
+// leaves the regular ones out. A configuration the analysis does not cover
+// is refused naming a vertex that has it.
+WorstRate worst_rate(const StartLevel& level, const Scheme& scheme, bool extraordinary_only) {
   WorstRate worst;
-  for (const auto& [kind, k] : configurations_present(mesh, scheme)) {
+  for (const auto& [configuration, vertex] : configurations_present(level.mesh, scheme)) {
     Configuration c;
-    c.kind = static_cast<Configuration::Kind>(kind);
-    c.k = k;
+    c.kind = static_cast<Configuration::Kind>(configuration.first);
+    c.k = configuration.second;
     if (extraordinary_only && is_regular(scheme, c)) continue;
-    const double rate = configuration_rate(scheme, c);
+    double rate = 0.0;
+    try {
+      rate = configuration_rate(scheme, c);
+    } catch (const InvalidInputError& e) {
+      if (vertex == kInvalidIndex) throw;
+      throw InvalidInputError(level.vertex_name(vertex) + ": no depth bound for its configuration: " + e.what() +
+                              " (limit positions and adaptive refinement need no bound)");
+    }
     if (rate > worst.rate || worst.where.empty()) worst = {rate, c.name()};
   }
   return worst;
@@ -239,11 +266,12 @@ bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& opti
   return std::abs(mask[0] - 1.0) < 1e-9 && mask.tail(mask.size() - 1).cwiseAbs().maxCoeff() < 1e-9;
 }
 
-DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
+DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options,
+                       const SourceLines* lines) {
   // Two steps of 4-8 are a quad-split scheme's level (Scheme::two_steps):
   // the bound is that scheme's, counted in levels of two steps.
   if (scheme.two_steps) {
-    DepthBound bound = depth_bound(mesh, *scheme.two_steps, options);
+    DepthBound bound = depth_bound(mesh, *scheme.two_steps, options, lines);
     bound.scheme = std::string(scheme.name);
     bound.steps_per_level = 2;
     return bound;
@@ -264,6 +292,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   const int start = scheme.split == SplitRule::quad && !all_quads(mesh) ? 1 : 0;
   const PolygonMesh first = refined(mesh, scheme, options, start);
   const LimitDistances distances = limit_distances(first, scheme, limit_options(options));
+  const StartLevel level{first, mesh.vertex_count(), start, lines};
 
   // The paper's bounds cover regular vertices (Catmull-Clark) or only the
   // vertices that already exist (Loop: the proof of Theorem 3 follows a
@@ -275,7 +304,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   if (paper_scheme) {
     DepthBound bound = scheme.name == "loop" ? loop_paper_bound(distances.max, max_valence(first))
                                              : cheng_catmull_clark_bound(max_second_difference(first), start);
-    const WorstRate extraordinary = worst_rate(first, scheme, true);
+    const WorstRate extraordinary = worst_rate(level, scheme, true);
     if (!extraordinary.where.empty()) {
       bound.source = "paper (regular) + analysis (extraordinary)";
       bound.terms.push_back({"largest control-vertex-to-limit distance, contracted by |lambda_1| at " +
@@ -285,7 +314,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
     return bound;
   }
 
-  const WorstRate worst = worst_rate(first, scheme, false);
+  const WorstRate worst = worst_rate(level, scheme, false);
   return {std::string(scheme.name),
           "analysis",
           start,

@@ -386,16 +386,6 @@ void run_with_threads(int threads, Body&& body) {
 
 namespace {
 
-// The prefix of an error about element i of a file: "path:line: ", "path: "
-// when its line is unknown, nothing without a path. `element_lines` picks the
-// kind of element (SourceLines::face_lines, ...).
-std::string where(const SourceLines* lines, const std::vector<std::uint32_t> SourceLines::*element_lines,
-                  std::size_t i) {
-  if (!lines || lines->path.empty()) return std::string();
-  const std::uint32_t line = SourceLines::at((*lines).*element_lines, static_cast<Index>(i));
-  return lines->path + (line ? ":" + std::to_string(line) : "") + ": ";
-}
-
 // The dual, midedge and sqrt3 splits have no rules for sharp features
 // (sqrt3: but corners), holes or non-manifold elements: refuse them, naming
 // the tag's line.

@@ -96,11 +96,16 @@ void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder&
 // there as 1 / (3 / (8 beta) + k); OpenSubdiv's assignSmoothLimitMask), and
 // the tangents sum cos(2 pi i/k) p_i, sum sin(2 pi i/k) p_i (the left
 // eigenvectors of the subdominant eigenvalue 3/8 + 1/4 cos(2 pi/k), which
-// do not depend on beta).
+// do not depend on beta). k = 2 (two triangles sharing all three edges:
+// the third is non-manifold, or they are a closed component): the same
+// position mask, whose derivation holds there (both edges' rules read the
+// other neighbour twice: e' = 3/8 v + 3/8 p_i + 1/4 p_j), and no tangents:
+// the one-ring matrix has one eigenvalue per frequency after 1 (1/8 on
+// p_1 - p_2, 1/64), no subdominant pair.
 template <double (*beta_of)(int)>
 bool smooth_limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
   const int k = n.edges;
-  if (k < 3 || n.faces != k) return false;
+  if (k < 2 || n.faces != k) return false;
   for (LimitMask* mask : {&m.position, &m.tangent1, &m.tangent2}) mask->reset(k, 0);
   const double beta = beta_of(k);
   const double chi = 8.0 * beta / (3.0 + 8.0 * k * beta);
@@ -109,6 +114,7 @@ bool smooth_limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
     const auto ii = static_cast<std::size_t>(i);
     const double angle = 2.0 * std::numbers::pi * i / k;
     m.position.edges[ii] = chi;
+    if (k == 2) continue;
     m.tangent1.edges[ii] = std::cos(angle);
     m.tangent2.edges[ii] = std::sin(angle);
   }

@@ -68,7 +68,7 @@ int run_depth(const DepthCommandOptions& opt) {
   DepthOptions options;
   options.refine.allow_non_manifold = opt.allow_non_manifold;
   check_refinable(file.mesh, scheme, options.refine, &file.lines);  // errors with the file's lines
-  const DepthBound bound = depth_bound(file.mesh, scheme, options);
+  const DepthBound bound = depth_bound(file.mesh, scheme, options, &file.lines);
   const int depth = bound.depth_for(opt.eps);
 
   std::printf("%s: %d vertices, %d faces, scheme %s\n", opt.input.c_str(), file.mesh.vertex_count(),

@@ -42,8 +42,13 @@
 //   rules' and the unflattened concave corners, which flip or fold).
 //   Vertices that match no
 //   canonical neighbourhood (darts, non-manifold vertices, semi-sharp
-//   features not yet resolved, an extraordinary vertex not yet isolated)
-//   keep their refined position and are counted.
+//   features not yet resolved, an extraordinary vertex not yet isolated,
+//   an interior vertex of two triangles) keep their refined position and
+//   are counted. An interior vertex with two quads (valence 2, which the quad
+//   split keeps) has the configuration interior k = 2
+//   (valence_two_ring_mesh): its limit mask is the left eigenvector of its
+//   one-ring matrix; that matrix has 1/4, 1/4 and -1/4 after 1 for
+//   Catmull-Clark, no subdominant pair, so no normal.
 
 #include <cstdint>
 #include <vector>

@@ -26,8 +26,12 @@ struct DepthOptions {
 /// among the configurations present (docs/design.md, "Depth"). A scheme
 /// with a two-step scheme (Scheme::two_steps: 4-8) is bounded through it,
 /// in levels of two steps (DepthBound::steps_per_level).
-/// Throws as refine() does for meshes it cannot refine.
-DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options = {});
+/// Throws as refine() does for meshes it cannot refine, and
+/// InvalidInputError naming a vertex (with its file and line from `lines`)
+/// whose configuration the analysis has no rate for (an interior vertex of
+/// two triangles).
+DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options = {},
+                       const SourceLines* lines = nullptr);
 
 /// Whether the scheme interpolates with masks wider than a face (the
 /// Butterfly schemes, Kobbelt's): its vertices are on the limit surface from

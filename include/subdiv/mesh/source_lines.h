@@ -26,4 +26,14 @@ struct SourceLines {
   }
 };
 
+/// The prefix of an error about element i of a file: "path:line: ", "path: "
+/// when its line is unknown, nothing without lines or a path.
+/// `element_lines` picks the kind of element (&SourceLines::face_lines, ...).
+inline std::string where(const SourceLines* lines, const std::vector<std::uint32_t> SourceLines::*element_lines,
+                         std::size_t i) {
+  if (!lines || lines->path.empty()) return std::string();
+  const std::uint32_t line = SourceLines::at((*lines).*element_lines, static_cast<Index>(i));
+  return lines->path + (line ? ":" + std::to_string(line) : "") + ": ";
+}
+
 }  // namespace subdiv
