@@ -6,6 +6,7 @@
 // depend on the thread count.
 
 #include "subdiv/refine/refine.h"
+#include "subdiv/refine/hierarchy.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -217,26 +218,30 @@ bool takes_two_steps(const Scheme& scheme, const PolygonMesh& mesh, const MeshTo
 // level with `scheme`, or two with scheme.two_steps where they apply.
 template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
-                          const RefineOptions& options, Step&& step) {
+                          const RefineOptions& options, Step&& step,
+                          const std::function<void(int, const Level&)>& on_child = nullptr,
+                          bool every_level = false) {
   PolygonMesh current = mesh;
   if (options.boundary_rules == BoundaryRules::piecewise_smooth && options.corner_angles == CornerAngles::measured)
     detail::measure_corner_angles(current, coarse_topology);
   std::optional<MeshTopology> topology = std::move(coarse_topology);
-  for (int l = 0; l < options.levels;) {
+  const int last = options.start_level + options.levels;
+  for (int l = options.start_level; l < last;) {
     if (!topology) topology.emplace(current);
-    const bool twice = l + 2 <= options.levels && takes_two_steps(scheme, current, *topology);
+    const bool twice = !every_level && l + 2 <= last && takes_two_steps(scheme, current, *topology);
     const Scheme& level_scheme = twice ? *scheme.two_steps : scheme;
     Level level = step(current, *topology, l, level_scheme);
     l += twice ? 2 : 1;
-    if (l == options.levels) topology.reset();
+    if (l == last) topology.reset();
     else if (level.child_topology) topology = std::move(level.child_topology);
     else if (level_scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
     else if (level_scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
     else if (level_scheme.split == SplitRule::sqrt3) topology = MeshTopology::from_sqrt3_split(*topology, level.child);
     else if (level_scheme.split == SplitRule::sqrt2) topology = MeshTopology::from_sqrt2_split(*topology, level.child);
     else topology.reset();  // built from the child's faces
+    if (on_child) on_child(l, level);
     current = std::move(level.child);
-    if (options.on_level) options.on_level(l, current);
+    if (options.on_level) options.on_level(l - options.start_level, current);
     // A derived topology holds a copy of the level's faces, and refinement
     // reads faces only through the topology: drop the mesh's copy, the
     // largest arrays of the level before the last (the final level keeps its
@@ -415,6 +420,8 @@ void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, cons
 MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                               const SourceLines* lines) {
   if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
+  if (options.start_level < 0)
+    throw InvalidInputError("the start level must be >= 0, not " + std::to_string(options.start_level));
   if (boundary_of(mesh, options) == BoundaryInterpolation::none)
     throw InvalidInputError("boundary interpolation 'none' is not supported; use edge-only or edge-and-corner");
   // quasi 4-8 reads tags its own way (quasi_4_8_refine.cpp).
@@ -500,6 +507,50 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
     });
   });
   return result;
+}
+
+Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                           KeepLevels keep, const SourceLines* lines) {
+  Hierarchy h;
+  const int last = options.start_level + options.levels;
+  if (scheme.split == SplitRule::quasi_4_8) {  // its own engine: levels without maps
+    RefineOptions collect = options;
+    if (keep == KeepLevels::all) {
+      h.levels.push_back({mesh, options.start_level, std::nullopt});
+      collect.on_level = [&](int l, const PolygonMesh& child) {
+        h.levels.push_back({child, options.start_level + l, std::nullopt});
+        if (options.on_level) options.on_level(l, child);
+      };
+    }
+    PolygonMesh finest = detail::refine_quasi_4_8(mesh, scheme, collect, lines);
+    if (keep == KeepLevels::last) h.levels.push_back({std::move(finest), last, std::nullopt});
+    return h;
+  }
+  MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
+  const BoundaryInterpolation boundary = boundary_of(mesh, options);
+  const CreaseMethod method = crease_method_of(mesh, options);
+  if (keep == KeepLevels::all) h.levels.push_back({mesh, options.start_level, std::nullopt});
+  std::optional<SplitMap> last_map;
+  const auto on_child = [&](int l, const Level& level) {
+    if (keep == KeepLevels::all) h.levels.push_back({level.child, l, level.map});
+    else if (l == last) last_map = level.map;
+  };
+  PolygonMesh finest;
+  run_with_threads(options.threads, [&] {
+    finest = refine_levels(
+        mesh, std::move(coarse), scheme, options,
+        [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
+          return refine_level(parent, topology, l, level_scheme, boundary, method, options,
+                              [&](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level,
+                                  bool) {
+                                evaluate_fast(source, step, view, level);
+                                detail::apply_flatness(level.flatness, level.child);
+                              });
+        },
+        on_child, keep == KeepLevels::all);
+  });
+  if (keep == KeepLevels::last) h.levels.push_back({std::move(finest), last, std::move(last_map)});
+  return h;
 }
 
 std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,

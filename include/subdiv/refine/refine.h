@@ -43,6 +43,12 @@ const char* to_string(CornerAngles);
 
 struct RefineOptions {
   int levels = 1;
+  /// The level the input mesh is at: 0 for a control mesh, k for a mesh
+  /// made by k steps of the same scheme. The sqrt3 split alternates its
+  /// boundary treatment with the level (sqrt3_step_trisects()), so refining a
+  /// level-k mesh by one more step equals refining the control mesh k + 1
+  /// steps only when this says k. A hierarchy (hierarchy.h) carries it.
+  int start_level = 0;
   /// Overrides the mesh's `interpolateboundary` tag; `none` is not supported.
   std::optional<BoundaryInterpolation> boundary;
   /// Refine meshes with non-manifold edges or vertices (and inconsistently
@@ -51,7 +57,8 @@ struct RefineOptions {
   bool allow_non_manifold = false;
   /// Worker threads; 0 = all available. Results are identical for any count.
   int threads = 0;
-  /// Called after each level with its number (1-based) and the level's mesh.
+  /// Called after each level with its number counted from this call
+  /// (1-based) and the level's mesh.
   /// Where the engine takes two steps at once (Scheme::two_steps: 4-8 on a
   /// closed mesh without face-varying channels) the level between them is
   /// never made, and only the second is reported.
