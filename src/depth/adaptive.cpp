@@ -9,13 +9,13 @@
 #include <cstdint>
 #include <optional>
 #include <vector>
-#include <stdexcept>
 #include <string>
 #include <unordered_map>
 
 #include "subdiv/core/error.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
+#include "subdiv/refine/hierarchy.h"
 
 namespace subdiv {
 
@@ -31,23 +31,9 @@ struct Level {
   std::vector<char> edge_split; // edge gets its edge point in the output
 };
 
-// The child numbering of split_topology (docs/design.md, "Refinement"):
-// quad split [face points | edge points | vertex points], triangle split
-// [edge points | vertex points].
-SplitMap split_map(const MeshTopology& t, SplitRule rule) {
-  SplitMap map;
-  map.rule = rule;
-  const Index faces = rule == SplitRule::quad ? t.face_count() : 0;
-  map.face_points = 0;
-  map.edge_points = faces;
-  map.vertex_points = faces + t.edge_count();
-  map.child_vertex_count = map.vertex_points + t.vertex_count();
-  return map;
-}
-
-class Hierarchy {
+class LeafHierarchy {
  public:
-  Hierarchy(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options)
+  LeafHierarchy(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options)
       : scheme_(scheme), eps_(eps), options_(options) {
     add_level(mesh);
     // Uniform levels until every vertex is within eps: no face of the last
@@ -58,12 +44,12 @@ class Hierarchy {
                                 " levels needed for accuracy " + std::to_string(eps_));
       RefineOptions one = options_.depth.refine;
       one.levels = 1;
+      one.start_level = static_cast<int>(levels_.size()) - 1;
       one.on_level = nullptr;
-      Level& parent = levels_.back();
-      parent.map = split_map(*parent.topology, scheme_.split);
-      add_level(refine(parent.mesh, scheme_, one));
-      if (levels_.back().mesh.vertex_count() != levels_[levels_.size() - 2].map.child_vertex_count)
-        throw std::logic_error("adaptive refinement: child numbering differs from the split's");
+      // The split's own map links the levels (hierarchy.h).
+      Hierarchy step = refine_hierarchy(levels_.back().mesh, scheme_, one, KeepLevels::last);
+      levels_.back().map = std::move(*step.levels.back().map);
+      add_level(std::move(step.levels.back().mesh));
     }
     levels_.front().exists.assign(levels_.front().exists.size(), 1);
     choose_leaves();
@@ -173,7 +159,7 @@ struct LevelVertex {
   Index index;
 };
 
-AdaptiveResult Hierarchy::result() const {
+AdaptiveResult LeafHierarchy::result() const {
   // Follow vertex points down to the level where the vertex appeared: that
   // names it whatever level a face refers to it at; its position is taken
   // at the deepest level any face refers to it.
@@ -303,7 +289,7 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
     throw InvalidInputError(std::string(scheme.name) +
                             ": no adaptive refinement for an interpolating scheme: its vertices are on the limit "
                             "surface at every level, so their distance to it says nothing about the faces in between");
-  return Hierarchy(mesh, scheme, eps, options).result();
+  return LeafHierarchy(mesh, scheme, eps, options).result();
 }
 
 }  // namespace subdiv
