@@ -420,6 +420,7 @@ void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, cons
 MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                               const SourceLines* lines) {
   if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
+  check_parameters(scheme);
   if (options.start_level < 0)
     throw InvalidInputError("the start level must be >= 0, not " + std::to_string(options.start_level));
   if (boundary_of(mesh, options) == BoundaryInterpolation::none)

@@ -66,6 +66,10 @@
 
 #include "subdiv/rules/kobbelt.h"
 
+#include <fmt/format.h>
+
+#include "subdiv/core/error.h"
+
 #include "rule_helpers.h"
 
 namespace subdiv {
@@ -305,6 +309,15 @@ bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::s
   return true;
 }
 
+// Kobbelt's virtual points weigh c = 2w / (1 + 2w) (kobbelt_diagonal_weight):
+// the family needs 1 + 2w > 0.
+void check_tension(std::string_view name, const SchemeParameters& parameters) {
+  if (!(parameters.tension > -0.5))
+    throw ParameterError(fmt::format("{}: the tension w = {} is out of range: kobbelt needs w > -1/2 (its virtual "
+                                     "points weigh 2w / (1 + 2w))",
+                                     name, parameters.tension));
+}
+
 }  // namespace
 
 const Scheme& kobbelt_scheme() {
@@ -323,6 +336,7 @@ const Scheme& kobbelt_scheme() {
     s.needs_quads = true;
     s.face_points_read_edge_points = true;
     s.evaluate_point = evaluate_point;
+    s.parameter_check = check_tension;
     return s;
   }();
   return scheme;

@@ -1,4 +1,8 @@
 #include <array>
+#include <cmath>
+#include <string>
+
+#include "subdiv/core/error.h"
 
 #include "subdiv/rules/bilinear.h"
 #include "subdiv/rules/butterfly.h"
@@ -34,6 +38,13 @@ std::span<const Scheme* const> all_schemes() {
       &interpolatory_sqrt3_scheme(), &kobbelt_scheme(), &four_eight_scheme(), &generalized_catmull_clark_scheme(),
       &midpoint_scheme(), &bilinear_scheme(), &linear_scheme(), &quasi_4_8_scheme()};
   return schemes;
+}
+
+void check_parameters(const Scheme& scheme) {
+  if (scheme.takes_tension && !std::isfinite(scheme.parameters.tension))
+    throw ParameterError(std::string(scheme.name) + ": the tension w = " + std::to_string(scheme.parameters.tension) +
+                         " is not finite");
+  if (scheme.parameter_check) scheme.parameter_check(scheme.name, scheme.parameters);
 }
 
 const Scheme* find_scheme(std::string_view name) {

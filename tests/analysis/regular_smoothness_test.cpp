@@ -144,7 +144,9 @@ TEST(RegularSmoothness, CurveAnalysisVerdicts) {
 // grids: its second differences decay at the curve's rate (the same lower
 // bound, found on a 2D window), and its verdicts are the curve's.
 TEST(RegularSmoothness, KobbeltIsTheFourPointTensorProduct) {
-  for (const double w : {1.0 / 16.0, 0.1, 0.18, 0.195, 0.3, -0.5}) {
+  // w = -1/2 is outside Kobbelt's family (its virtual points divide by 1 + 2w).
+  EXPECT_THROW(regular_interior_rule(with_tension(kobbelt_scheme(), -0.5)), ParameterError);
+  for (const double w : {1.0 / 16.0, 0.1, 0.18, 0.195, 0.3, -0.4}) {
     const RegularSmoothness surface = regular_smoothness(regular_interior_rule(with_tension(kobbelt_scheme(), w)));
     const RegularSmoothness curve = curve_verdict(w);
     // 1e-6: at w = 1/16 the rate 1/4 is a repeated (defective) eigenvalue,

@@ -34,9 +34,12 @@ Scheme with_tension(const Scheme& scheme, std::optional<double> tension) {
     throw InvalidInputError("--tension applies to butterfly, kobbelt and the curve scheme four-point, not to " +
                             std::string(scheme.name));
   // Kobbelt's virtual points divide by 1 + 2w (rules/kobbelt.cpp).
-  if (scheme.name == "kobbelt" && !(*tension > -0.5))
-    throw InvalidInputError(fmt::format("--tension {}: kobbelt needs w > -1/2", *tension));
   chosen.parameters.tension = *tension;
+  try {
+    check_parameters(chosen);
+  } catch (const ParameterError& e) {
+    throw InvalidInputError(fmt::format("--tension {}: {}", *tension, e.what()));
+  }
   return chosen;
 }
 

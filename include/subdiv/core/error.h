@@ -20,6 +20,13 @@ class InvalidInputError : public Error {
   using Error::Error;
 };
 
+/// A scheme's parameter lies outside its family's valid range; the message
+/// names the scheme, the parameter and the range.
+class ParameterError : public InvalidInputError {
+ public:
+  using InvalidInputError::InvalidInputError;
+};
+
 /// The mesh's connectivity cannot support the requested operation
 /// (non-manifold where manifold is required, out-of-range indices...).
 class TopologyError : public InvalidInputError {

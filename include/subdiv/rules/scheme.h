@@ -209,6 +209,10 @@ using PointEvaluator = bool (*)(const LevelView& level, const SplitMap& map, Ind
                                 std::span<const Vec3> parent_positions, std::span<const Vec3> child_positions,
                                 Vec3& out);
 
+/// Throws ParameterError when `parameters` lie outside the family's valid
+/// range (the scheme's rule file states it). `name` is the scheme's.
+using ParameterCheck = void (*)(std::string_view name, const SchemeParameters& parameters);
+
 struct Scheme;
 /// Composite schemes: the operators one level applies in turn, each an
 /// ordinary one-split scheme with its own parameters (refine.cpp).
@@ -266,7 +270,15 @@ struct Scheme {
   /// The fast path's shortcut per child vertex (PointEvaluator); nullptr:
   /// the masks. Unused where vertex channels need the masks anyway.
   PointEvaluator evaluate_point = nullptr;
+  /// The family's own parameter check (ParameterCheck); nullptr: only the
+  /// generic one (check_parameters()).
+  ParameterCheck parameter_check = nullptr;
 };
+
+/// Throws ParameterError unless the scheme's parameters are valid: a finite
+/// tension where the masks read it, and the family's own check. Every
+/// refinement entry point calls it.
+void check_parameters(const Scheme& scheme);
 
 /// Every scheme, in the order `subdiv schemes` lists them.
 std::span<const Scheme* const> all_schemes();

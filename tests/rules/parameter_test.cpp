@@ -1,0 +1,61 @@
+// Every family's parameters are checked by the library, with a typed error,
+// at every refinement entry point (the CLI adds nothing of its own).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "subdiv/analysis/analyze.h"
+#include "subdiv/core/error.h"
+#include "subdiv/mesh/triangulate.h"
+#include "subdiv/refine/hierarchy.h"
+#include "subdiv/refine/refine.h"
+#include "subdiv/rules/butterfly.h"
+#include "subdiv/rules/kobbelt.h"
+#include "support/test_meshes.h"
+
+namespace subdiv {
+namespace {
+
+Scheme with_tension(const Scheme& scheme, double w) {
+  Scheme s = scheme;
+  s.parameters.tension = w;
+  return s;
+}
+
+void expect_refused(const Scheme& scheme, const PolygonMesh& mesh) {
+  EXPECT_THROW(refine(mesh, scheme), ParameterError) << scheme.parameters.tension;
+  EXPECT_THROW(refine_stencils(mesh, scheme), ParameterError);
+  EXPECT_THROW(refine_stencil_table(mesh, scheme), ParameterError);
+  EXPECT_THROW(refine_hierarchy(mesh, scheme), ParameterError);
+  EXPECT_THROW(check_refinable(mesh, scheme, {}), ParameterError);
+}
+
+// Kobbelt's virtual-point weight 2w / (1 + 2w) needs w > -1/2: at -1/2 the
+// library used to return NaN positions.
+TEST(SchemeParameters, KobbeltTension) {
+  const PolygonMesh cube = test::cube();
+  for (const double w : {-0.5, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    expect_refused(with_tension(kobbelt_scheme(), w), cube);
+  try {
+    refine(cube, with_tension(kobbelt_scheme(), -0.5));
+  } catch (const ParameterError& e) {
+    EXPECT_NE(std::string(e.what()).find("kobbelt needs w > -1/2"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(analyze(with_tension(kobbelt_scheme(), -0.5), {Configuration::Kind::interior, 4}), ParameterError);
+  // Inside the range the positions are finite.
+  for (const double w : {-0.49, 0.0, 1.0 / 16.0, 0.3}) {
+    const PolygonMesh out = refine(cube, with_tension(kobbelt_scheme(), w));
+    for (const Vec3& p : out.positions) EXPECT_TRUE(std::isfinite(p.x + p.y + p.z)) << w;
+  }
+}
+
+TEST(SchemeParameters, ButterflyTensionMustBeFinite) {
+  const PolygonMesh mesh = triangulate(test::cube());
+  expect_refused(with_tension(butterfly_scheme(), std::numeric_limits<double>::quiet_NaN()), mesh);
+  EXPECT_NO_THROW(refine(mesh, with_tension(butterfly_scheme(), -0.2)));  // any finite w is a member
+}
+
+}  // namespace
+}  // namespace subdiv
