@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numeric>
 #include <numbers>
@@ -424,23 +425,28 @@ std::optional<GenericLimit> generic_limit(const GenericLevel& g, Index v, MaskCa
   const VertexRule rule = g.creasing.vertex_rule[vi];
   // The canonical ring's rules: faces of the split's kind, the rule
   // constant over the levels, edges smooth or infinitely sharp.
-  bool canonical = t.ring_ordered(v) && rule == g.creasing.child_vertex_rule[vi] && !g.semi_sharp_vertex[vi];
+  // Semi-sharp features at v change its rule on a later level.
+  bool settled = rule == g.creasing.child_vertex_rule[vi] && !g.semi_sharp_vertex[vi];
   int sharp = 0;
   for (const Index e : t.vertex_edges(v)) {
     const double s = edge_sharpness_of(g.creasing, e);
     if (s >= kInfiniteSharpness) ++sharp;
-    else if (s > 0.0) canonical = false;
+    else if (s > 0.0) settled = false;
   }
+  bool canonical = t.ring_ordered(v) && settled;
   const Index face_size = g.quads ? 4 : 3;
   for (const Index c : t.vertex_corners(v)) canonical = canonical && t.face_size(t.corner_face(c)) == face_size;
   const VertexKind kind = t.vertex_kind(v);
   if (rule == VertexRule::corner) {
-    // Every rule here keeps an infinitely sharp corner. Its tangents: the
+    // Every rule here keeps an infinitely sharp corner, but not one whose
+    // sharpness decays (semi-sharp edges or vertex sharpness): it moves once
+    // its rule changes. Its tangents: the
     // corner configuration's pair 1/2 on one sector (a boundary corner's
     // only one, an interior corner's first), the sector angle as the rules
     // give it.
     // The flatness modification applies at boundary corners of one sector
     // only: a concave sector beside others matches no configuration.
+    if (!settled) return std::nullopt;
     GenericLimit corner{p, std::nullopt, std::nullopt};
     if (!canonical || sharp < 2 || (kind != VertexKind::boundary && kind != VertexKind::interior)) return corner;
     const Sector sector = sharp_sectors(g, v).front();
@@ -500,9 +506,27 @@ std::optional<GenericLimit> generic_limit(const GenericLevel& g, Index v, MaskCa
   return from_masks(g, v, m, *ring, all);
 }
 
+// Whether a semi-sharp edge or vertex sharpness is at v or a neighbour of
+// it: a rule there changes on a later level.
+bool near_semi_sharp(const GenericLevel& g, Index v) {
+  const auto semi_sharp_at = [&](Index w) {
+    if (g.semi_sharp_vertex[static_cast<std::size_t>(w)]) return true;
+    for (const Index e : g.t.vertex_edges(w)) {
+      const double s = edge_sharpness_of(g.creasing, e);
+      if (s > 0.0 && s < kInfiniteSharpness) return true;
+    }
+    return false;
+  };
+  if (semi_sharp_at(v)) return true;
+  for (const Index e : g.t.vertex_edges(v))
+    if (semi_sharp_at(g.t.other_vertex(e, v))) return true;
+  return false;
+}
+
 // Refinement steps after which the closed forms apply everywhere they can:
 // one where a face has another size than the split's, ceil(s) for the
-// largest finite sharpness s; at most `cap`.
+// largest finite sharpness s; at most `cap` (the caller also stops before a
+// level over its face budget).
 int levels_to_resolve(const PolygonMesh& mesh, const Scheme& scheme, int cap) {
   int levels = 0;
   const Index face_size = scheme.split == SplitRule::quad ? 4 : 3;
@@ -519,8 +543,8 @@ int levels_to_resolve(const PolygonMesh& mesh, const Scheme& scheme, int cap) {
 }  // namespace
 
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options) {
-  if (options.isolation_levels < 0 || options.max_resolve_levels < 0)
-    throw InvalidInputError("limit: refinement levels must be >= 0");
+  if (options.isolation_levels < 0 || options.max_resolve_levels < 0 || options.max_resolve_faces < 0)
+    throw InvalidInputError("limit: refinement levels and faces must be >= 0");
   if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no limit positions for composite schemes yet (refine and analyze cover them)");
   if (scheme.split == SplitRule::dual) return dual_limit_positions(mesh, scheme, options);
   const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
@@ -570,6 +594,13 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
     current = refine(current, scheme, all);
   } else {
     for (int l = 0; l < levels; ++l) {
+      // The closed-form route stops before a level over its face budget.
+      const std::int64_t child_faces = scheme.split == SplitRule::quad ? std::int64_t{current.corner_count()}
+                                                                       : 4 * std::int64_t{current.face_count()};
+      if (closed_form && child_faces > options.max_resolve_faces) {
+        levels = l;
+        break;
+      }
       PolygonMesh child = refine(current, scheme, one);
       follow(current.vertex_count(), child.vertex_count());
       current = std::move(child);
@@ -631,7 +662,12 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
       continue;
     }
     ++result.approximated;
+    if (near_semi_sharp(generic, v)) ++result.semi_sharp;
   }
+  for (const CreaseTag& c : current.tags.creases)
+    if (c.sharpness < kInfiniteSharpness) result.sharpness_left = std::max(result.sharpness_left, c.sharpness);
+  for (const CornerTag& c : current.tags.corners)
+    if (c.sharpness < kInfiniteSharpness) result.sharpness_left = std::max(result.sharpness_left, c.sharpness);
   return result;
 }
 

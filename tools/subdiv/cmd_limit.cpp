@@ -4,7 +4,9 @@
 // the masks the analysis reads off its rules.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <string>
 #include <memory>
 
 #include "commands.h"
@@ -76,12 +78,39 @@ int run_limit(const LimitCommandOptions& opt) {
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
   print_warnings(opt.output, write_mesh(out, opt.output, wopt));
-  if (limit.approximated > 0)
-    std::fprintf(stderr,
-                 "subdiv: warning: %d vertices match no canonical configuration (darts, non-manifold or unresolved "
-                 "semi-sharp features, another extraordinary vertex within the masks' neighbourhood, which more "
-                 "--isolation-levels separate): written at their position after %d levels, not at the limit\n",
-                 limit.approximated, limit.levels_refined);
+  // Why vertices were left short of the limit, and what would reach it.
+  const bool generic = options.route == LimitRoute::generic || !scheme->limit_masks;
+  if (limit.semi_sharp > 0) {
+    const int more = static_cast<int>(std::ceil(limit.sharpness_left));
+    if (generic)
+      std::fprintf(stderr,
+                   "subdiv: warning: %d vertices are at or next to semi-sharp features still unresolved after %d "
+                   "levels (sharpness up to %g left: --isolation-levels %d resolves them): written at their position "
+                   "there, not at the limit\n",
+                   limit.semi_sharp, limit.levels_refined, limit.sharpness_left, limit.levels_refined + more);
+    else
+      std::fprintf(stderr,
+                   "subdiv: warning: %d vertices are at or next to semi-sharp features still unresolved after %d "
+                   "levels (sharpness up to %g left), as far as the closed-form masks refine (the next level would "
+                   "pass %lld faces): written at their position there, not at the limit\n",
+                   limit.semi_sharp, limit.levels_refined, limit.sharpness_left,
+                   static_cast<long long>(options.max_resolve_faces));
+  }
+  if (const Index other = limit.approximated - limit.semi_sharp; other > 0) {
+    if (generic)
+      std::fprintf(stderr,
+                   "subdiv: warning: %d vertices match no canonical configuration (darts, non-manifold vertices, "
+                   "interior creases between single faces, interior vertices of two triangles, or another "
+                   "extraordinary vertex within the masks' neighbourhood, which more --isolation-levels separate): "
+                   "written at their position after %d levels, not at the limit\n",
+                   other, limit.levels_refined);
+    else
+      std::fprintf(stderr,
+                   "subdiv: warning: %d vertices have no closed form and match no canonical configuration "
+                   "(non-manifold or inconsistently oriented neighbourhoods): written at their position after %d "
+                   "levels, not at the limit\n",
+                   other, limit.levels_refined);
+  }
   if (opt.normals) {
     const auto undefined = std::count_if(limit.normals.begin(), limit.normals.end(),
                                          [](const Vec3& n) { return !(norm(n) > 0.0); });
@@ -93,8 +122,17 @@ int run_limit(const LimitCommandOptions& opt) {
   }
   const bool closed = std::any_of(limit.sources.begin(), limit.sources.end(),
                                   [](LimitSource s) { return s == LimitSource::closed_form; });
-  std::printf("wrote %s: %d vertices at their %s limit positions (%s masks)%s\n", opt.output.c_str(),
-              out.vertex_count(), std::string(scheme->name).c_str(), closed ? "closed-form" : "generic",
+  // The summary counts what the warnings count.
+  const std::string short_of =
+      limit.approximated > 0 ? ", " + std::to_string(limit.approximated) + " at their positions after " +
+                                   std::to_string(limit.levels_refined) + " levels"
+                             : std::string();
+  const std::string at_limit = limit.approximated > 0
+                                   ? std::to_string(out.vertex_count()) + " vertices, " +
+                                         std::to_string(out.vertex_count() - limit.approximated) + " at"
+                                   : std::to_string(out.vertex_count()) + " vertices at";
+  std::printf("wrote %s: %s their %s limit positions (%s masks)%s%s\n", opt.output.c_str(), at_limit.c_str(),
+              std::string(scheme->name).c_str(), closed ? "closed-form" : "generic", short_of.c_str(),
               opt.normals ? ", with limit normals" : "");
   return kExitOk;
 }

@@ -7,10 +7,11 @@
 //   the masks to apply (one level where a face has another size than the
 //   split's; ceil(s) levels for the largest finite sharpness s, so that
 //   semi-sharp edges and vertices have become smooth), at most
-//   `max_resolve_levels`; a vertex's limit is the limit of its vertex point.
-//   Vertices without a closed form there (valence below 3, semi-sharp
-//   features beyond the cap) take the generic masks when their neighbourhood
-//   matches a configuration, else keep their refined position.
+//   `max_resolve_levels` and no level over `max_resolve_faces`; a vertex's
+//   limit is the limit of its vertex point. Vertices without a closed form
+//   there (valence 2, semi-sharp features beyond the caps) take the generic
+//   masks when their neighbourhood matches a configuration, else keep their
+//   refined position.
 // - Generic masks, for every scheme: the left eigenvectors of the local
 //   subdivision matrix (eigenvalue 1: the limit position; the subdominant
 //   pair: two tangents), computed once per configuration by the analysis
@@ -42,9 +43,10 @@
 //   rules' and the unflattened concave corners, which flip or fold).
 //   Vertices that match no
 //   canonical neighbourhood (darts, non-manifold vertices, semi-sharp
-//   features not yet resolved, an extraordinary vertex not yet isolated,
-//   an interior vertex of two triangles) keep their refined position and
-//   are counted. An interior vertex with two quads (valence 2, which the quad
+//   features not yet resolved, corners among them: a corner is kept only
+//   where its rule stays, an extraordinary vertex not yet isolated, an
+//   interior vertex of two triangles) keep their refined position and are
+//   counted. An interior vertex with two quads (valence 2, which the quad
 //   split keeps) has the configuration interior k = 2
 //   (valence_two_ring_mesh): its limit mask is the left eigenvector of its
 //   one-ring matrix; that matrix has 1/4, 1/4 and -1/4 after 1 for
@@ -72,8 +74,10 @@ struct LimitOptions {
   /// starting with a step that does not trisect the boundary.
   int isolation_levels = 2;
   /// Closed-form route: most refinement steps taken to resolve faces and
-  /// semi-sharp features.
-  int max_resolve_levels = 4;
+  /// semi-sharp features (10 covers every finite sharpness: 10 is infinite).
+  int max_resolve_levels = 10;
+  /// Closed-form route: no step is taken whose mesh would have more faces.
+  std::int64_t max_resolve_faces = std::int64_t{1} << 24;
   bool normals = true;
   /// Boundary interpolation and non-manifold handling, as for refine().
   RefineOptions refine;
@@ -94,6 +98,13 @@ struct LimitResult {
   std::vector<LimitSource> sources;  ///< one per input vertex
   /// Vertices left at their refined position (not the limit).
   Index approximated = 0;
+  /// Of `approximated`: vertices with a semi-sharp edge or vertex sharpness
+  /// at them or at a neighbour after `levels_refined` steps, which more
+  /// steps resolve (ceil(sharpness_left) more make every feature smooth or
+  /// infinitely sharp).
+  Index semi_sharp = 0;
+  /// The largest finite sharpness left after `levels_refined` steps (0: none).
+  double sharpness_left = 0.0;
   int levels_refined = 0;  ///< refinement steps taken before the masks
 };
 
