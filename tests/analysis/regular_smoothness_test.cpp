@@ -20,15 +20,12 @@
 #include "subdiv/rules/kobbelt.h"
 #include "subdiv/rules/loop.h"
 #include "subdiv/rules/scheme.h"
+#include "support/tension.h"
 
 namespace subdiv {
 namespace {
 
-Scheme with_tension(const Scheme& scheme, double w) {
-  Scheme s = scheme;
-  s.parameters.tension = w;
-  return s;
-}
+using test::with_tension;
 
 std::map<std::array<int, 2>, double> weights_of(const LatticeRule& rule) {
   std::map<std::array<int, 2>, double> m;

@@ -13,16 +13,13 @@
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/butterfly.h"
 #include "subdiv/rules/kobbelt.h"
+#include "support/tension.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
 namespace {
 
-Scheme with_tension(const Scheme& scheme, double w) {
-  Scheme s = scheme;
-  s.parameters.tension = w;
-  return s;
-}
+using test::with_tension;
 
 void expect_refused(const Scheme& scheme, const PolygonMesh& mesh) {
   EXPECT_THROW(refine(mesh, scheme), ParameterError) << scheme.parameters.tension;
