@@ -90,13 +90,10 @@ LatticeRule read_rule(const Scheme& scheme, const RefineOptions& rules, RegularM
   RefineOptions options = rules;
   options.levels = levels;
   options.threads = 1;
+  options.start_level = 0;
   options.on_level = nullptr;
-  PolygonMesh child;
   const StencilTable table = refine_stencil_table(r.mesh, scheme, options);
-  {
-    RefineOptions topology_only = options;
-    child = refine(r.mesh, scheme, topology_only);
-  }
+  const PolygonMesh child = refine(r.mesh, scheme, options);  // its faces give the children's lattice basis
   if (table.row_count() != child.vertex_count())
     throw InvalidInputError(what + ": the stencils and the refined mesh disagree in size");
 
