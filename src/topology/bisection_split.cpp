@@ -153,6 +153,7 @@ BisectionMap bisection_split(const PolygonMesh& parent, const MeshTopology& topo
   // Tags: the halves of a split crease stay tagged; vertex numbers are kept.
   child.tags = parent.tags;
   child.tags.creases.clear();
+  child.tags.other.clear();  // uninterpreted tags index the parent's faces (propagate_tags)
   for (const CreaseTag& t : parent.tags.creases) {
     const Index e = topology.find_edge(t.v0, t.v1);
     const Index s = e == kInvalidIndex ? kInvalidIndex : split_point[static_cast<std::size_t>(e)];

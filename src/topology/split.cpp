@@ -75,7 +75,9 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
   out.triangle_subdivision_set = in.triangle_subdivision_set;
   out.face_varying_propagate_corners = in.face_varying_propagate_corners;
   out.face_varying_propagate_corners_set = in.face_varying_propagate_corners_set;
-  out.other = in.other;
+  // Tags no module interprets (hierarchical edits) name the parent's faces,
+  // edges and vertices by index; the child's elements are others, so they
+  // are dropped (out.other stays empty).
   if (map.rule == SplitRule::sqrt3) {  // vertices are kept, edges are not: corners only
     propagate_corners(in, parent.vertex_count(), map, out);
     return;

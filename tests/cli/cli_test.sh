@@ -566,6 +566,19 @@ run analyze-q48 0 analyze -s quasi-4-8 -k 3..6 &&
 run analyze-q48-json 1 analyze -s quasi-4-8 --json && stderr_one_line analyze-q48-json
 run analyze-warmup-loop 1 analyze -s loop --warmup 2 && stderr_one_line analyze-warmup-loop
 
+# Hierarchical edits: convert keeps them; refine, limit and adaptive drop
+# them from the refined mesh and say how many of each kind.
+edits=$data/hierarchical_edits.obj
+run convert-edits 0 convert "$edits" "$work/e.obj" && [ ! -s "$work/err" ] && pass || fail "convert-edits: warned"
+[ "$(grep -c '^t vertexedit\|^t faceedit' "$work/e.obj")" -eq 3 ] && pass || fail "convert-edits: edits not written back"
+for cmd in "refine -l 1" "limit -l 1" "adaptive --eps 0.1"; do
+  name="edits-${cmd%% *}"
+  run "$name" 0 $cmd "$edits" -s catmull-clark -o "$work/e.obj" && stderr_one_line "$name" &&
+    stderr_has "$name" "hierarchical_edits.obj: 3 tags not interpreted dropped from the refined mesh (2 vertexedit, 1 faceedit)"
+  grep -q '^t .*edit' "$work/e.obj" && fail "$name: edits written to the refined mesh" || pass
+done
+run edits-limit-0 0 limit "$edits" -s catmull-clark -o "$work/e.obj" && [ ! -s "$work/err" ] && pass || fail "edits-limit-0: warned"
+
 # ---- Issue 22 (wrong answers): interior valence-2 vertices in limit, depth
 # and adaptive; semi-sharp features in limit; hierarchical edits on
 # refinement. Shared meshes: skipped with a note when absent.

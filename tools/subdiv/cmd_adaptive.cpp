@@ -43,6 +43,7 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
   options.depth.refine.allow_non_manifold = opt.allow_non_manifold;
   check_refinable(file.mesh, scheme, options.depth.refine, &file.lines);  // errors with the file's lines
   const AdaptiveResult result = adaptive_refine(file.mesh, scheme, opt.eps, options);
+  warn_dropped_tags(opt.input, file.mesh.tags);
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;

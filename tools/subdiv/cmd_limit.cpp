@@ -64,7 +64,10 @@ int run_limit(const LimitCommandOptions& opt) {
   check_refinable(file.mesh, *scheme, refine_options, &file.lines);
   // The mesh whose vertices are written: the input, or its refinement.
   PolygonMesh out = std::move(file.mesh);
-  if (opt.levels > 0) out = refine(out, *scheme, refine_options);
+  if (opt.levels > 0) {
+    warn_dropped_tags(opt.input, out.tags);
+    out = refine(out, *scheme, refine_options);
+  }
   const LimitResult limit = limit_positions(out, *scheme, options);
   out.positions = limit.positions;
   if (opt.normals) {

@@ -175,9 +175,6 @@ int run_refine(const RefineCommandOptions& opt) {
                  opt.input.c_str(), file.mesh.polylines.size());
   }
   triangulate_if_asked(*scheme, opt.triangulate, file);
-  if (!file.mesh.tags.other.empty())
-    std::fprintf(stderr, "subdiv: warning: %s: %zu tags not interpreted (e.g. '%s'), carried through unchanged\n",
-                 opt.input.c_str(), file.mesh.tags.other.size(), file.mesh.tags.other.front().name.c_str());
 
   const bool quasi = scheme->split == SplitRule::quasi_4_8;
   if (!quasi && opt.full_steps) throw InvalidInputError("--full-steps applies to quasi-4-8, not to " + opt.scheme);
@@ -188,6 +185,7 @@ int run_refine(const RefineCommandOptions& opt) {
   for (const std::string& text : opt.creases)
     file.mesh.tags.creases.push_back(parse_crease(text, file.mesh.vertex_count()));
   options.levels = opt.full_steps ? 2 * opt.levels : opt.levels;
+  if (options.levels > 0) warn_dropped_tags(opt.input, file.mesh.tags);
   if (opt.quasi_boundary == "smoothed") options.quasi_4_8_boundary = Quasi48Boundary::smoothed;
   options.allow_non_manifold = opt.allow_non_manifold;
   options.threads = opt.threads;

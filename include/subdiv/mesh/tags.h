@@ -50,7 +50,9 @@ enum class CreaseMethod { uniform, chaikin };
 enum class TriangleSubdivision { catmark, smooth };
 
 /// A tag line kept verbatim because no module interprets it yet
-/// (hierarchical edits, future extensions). Written back unchanged.
+/// (hierarchical edits, future extensions). Written back unchanged with the
+/// same mesh (`subdiv convert`); refinement drops them from the refined
+/// levels, whose faces and vertices their indices do not name.
 struct RawTag {
   std::string name;
   std::vector<long long> ints;

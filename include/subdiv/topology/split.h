@@ -101,7 +101,8 @@ bool dual_split_has_v_face(const MeshTopology& topology, Index v);
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f);
 
 /// The child level's faces, tags (crease and corner sharpness decremented by
-/// one per level unless infinite, holes inherited) and face-varying channels
+/// one per level unless infinite, holes inherited; tags no module interprets,
+/// such as hierarchical edits, dropped) and face-varying channels
 /// (linearly interpolated within each face). `child.positions` is resized to
 /// the child vertex count and zero-filled; vertex channels are not created.
 /// The parent's faces are read from `topology` only (the parent mesh gives
