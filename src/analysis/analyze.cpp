@@ -118,7 +118,7 @@ ConfigurationAnalysis analyze_point(const Scheme& scheme, const Configuration& c
   ConfigurationAnalysis a;
   a.matrix = invariant_subdivision_matrix(scheme, configuration, options.max_rings, options.rules);
   if (!a.matrix.invariant) {
-    a.reason = "no invariant neighbourhood within " + std::to_string(options.max_rings) +
+    a.reason = "no invariant neighbourhood within " + std::to_string(a.matrix.rings) +
                " rings: " + a.matrix.invariance_note;
     return a;
   }

@@ -160,7 +160,7 @@ CharacteristicMap characteristic_map(const Scheme& scheme, const LocalSubdivisio
   RefineOptions options = matrix.rules;
   options.levels = steps;
   Scheme open = scheme;  // the ring mesh's outer boundary lies outside the neighbourhood
-  open.needs_closed_mesh = false;
+  open.traits.needs_closed_mesh = false;
   const std::vector<StencilTable> tables = refine_stencils(ring.mesh, open, options);
   const Scheme& placement = layout_placement(scheme.split);
   RefineOptions linear;

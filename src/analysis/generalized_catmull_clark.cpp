@@ -29,11 +29,11 @@ double gcc_rho_b_bound(int degree) { return std::pow(0.5, degree / 2 + 1); }
 double gcc_rho_a_bound(int degree) { return std::pow(0.25, degree / 2 + 1); }
 
 GccTheorem gcc_theorem(const Scheme& scheme, int m) {
-  if (!scheme.steps || scheme.parameters.degree != 3 || scheme.parameters.smoothing.size() != 1)
+  if (!scheme.steps || std::get<DegreeParameters>(scheme.parameters).degree != 3 || std::get<DegreeParameters>(scheme.parameters).smoothing.size() != 1)
     throw InvalidInputError(std::string(scheme.name) +
                             ": the closed forms of Example 6.2 are those of M_3-bar (degree 3, one smoothing operator)");
   if (m < 3) throw InvalidInputError("closed forms: valence must be >= 3, not " + std::to_string(m));
-  const SmoothingWeights& w = scheme.parameters.smoothing.front();
+  const SmoothingWeights& w = std::get<DegreeParameters>(scheme.parameters).smoothing.front();
   GccTheorem r;
   r.valence = m;
   r.mu0 = gcc_mu0(w, m);
@@ -107,7 +107,7 @@ double regular_second_difference_norm(const Scheme& scheme) {
   if (scheme.split != SplitRule::quad && scheme.split != SplitRule::dual)
     throw InvalidInputError(std::string(scheme.name) + ": second differences need a quad mesh scheme");
   // A regular grid wide enough that its centre's rows do not see the boundary.
-  const int reach = 2 * std::max(3, scheme.parameters.degree) + 4, n = 2 * reach;
+  const int reach = 2 * std::max(3, std::get<DegreeParameters>(scheme.parameters).degree) + 4, n = 2 * reach;
   PolygonMesh grid;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) grid.positions.push_back({double(i), double(j), 0.0});
@@ -117,7 +117,7 @@ double regular_second_difference_norm(const Scheme& scheme) {
       grid.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   Scheme open = scheme;
-  open.needs_closed_mesh = false;
+  open.traits.needs_closed_mesh = false;
   RefineOptions once;
   once.levels = 1;
   std::vector<StencilTable> tables;

@@ -60,7 +60,7 @@ RegularMesh regular_mesh(bool triangles, bool periodic_y) {
 }
 
 bool takes_triangles(const Scheme& scheme) {
-  return scheme.needs_triangles || scheme.split == SplitRule::triangle || scheme.split == SplitRule::sqrt3;
+  return scheme.traits.needs_triangles || scheme.split == SplitRule::triangle || scheme.split == SplitRule::sqrt3;
 }
 
 // x reduced to the nearest image of `near` (periodic directions only).
@@ -209,8 +209,8 @@ LatticeRule regular_interior_rule(const Scheme& scheme, const RefineOptions& rul
 
 LatticeRule regular_boundary_rule(const Scheme& scheme, const RefineOptions& rules) {
   const std::string what = fmt::format("{}: regular boundary rule", scheme.name);
-  if (scheme.needs_closed_mesh) throw InvalidInputError(what + ": the scheme has no boundary rules");
-  LatticeRule rule = read_rule(scheme, rules, regular_mesh(takes_triangles(scheme), false), scheme.period, what);
+  if (scheme.traits.needs_closed_mesh) throw InvalidInputError(what + ": the scheme has no boundary rules");
+  LatticeRule rule = read_rule(scheme, rules, regular_mesh(takes_triangles(scheme), false), scheme.traits.period, what);
   const auto& M = rule.dilation;
   if (M[0][1] != 0 || M[1][0] != 0 || M[0][0] != M[1][1])
     throw InvalidInputError(what + ": the children's lattice turns against the boundary");

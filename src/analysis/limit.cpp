@@ -173,7 +173,7 @@ class MaskCache {
       // The curves' pair spans the tangent plane when it is subdominant:
       // lambda_1 = lambda_2 = curve > |lambda_3|: 1/2 per binary step, the
       // analysis step's (arity^-period: 1/3 over sqrt3's two steps).
-      const double curve = std::pow(arity(scheme_.split), -scheme_.period);
+      const double curve = std::pow(arity(scheme_.split), -scheme_.traits.period);
       masks.tangents = corner_tangent_masks(a.matrix.S, curve);
       const auto& l = a.leading;
       masks.normal = masks.tangents && l.size() >= 4 && same(l[1].real(), curve) && same(l[2].real(), curve) &&

@@ -9,6 +9,9 @@
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
+#include "subdiv/rules/bilinear.h"
+#include "subdiv/rules/linear.h"
+#include "subdiv/rules/midedge.h"
 
 namespace subdiv {
 
@@ -334,24 +337,31 @@ std::vector<Vec3> sqrt2_child_layout(const RingMesh& ring, int levels) {
 }  // namespace
 
 const Scheme& layout_placement(SplitRule split) {
-  static const Scheme sqrt2{"sqrt2-placement", "", "", SplitRule::sqrt2, false, centroid_placement, nullptr, kept_placement};
-  if (split == SplitRule::sqrt2) return sqrt2;
-  static const Scheme sqrt3 = [] {
-    Scheme s{"sqrt3-placement", "", "", SplitRule::sqrt3, true, centroid_placement, nullptr, kept_placement};
-    s.boundary_point = third_placement;
-    return s;
-  }();
-  if (split == SplitRule::sqrt3) return sqrt3;
-  static const Scheme dual{"dual-placement", "", "", SplitRule::dual, false, nullptr, nullptr, nullptr, nullptr,
-                           dual_placement, dual_boundary_placement};
+  static const Scheme sqrt2{.name = "sqrt2-placement",
+                            .split = SplitRule::sqrt2,
+                            .masks = {.face_point = centroid_placement, .vertex_point = kept_placement}};
+  static const Scheme sqrt3{.name = "sqrt3-placement",
+                            .split = SplitRule::sqrt3,
+                            .traits = {.needs_triangles = true},
+                            .masks = {.face_point = centroid_placement,
+                                      .vertex_point = kept_placement,
+                                      .boundary_point = third_placement}};
+  static const Scheme dual{.name = "dual-placement",
+                           .split = SplitRule::dual,
+                           .masks = {.corner_point = dual_placement, .boundary_point = dual_boundary_placement}};
   static const Scheme midedge = [] {
-    Scheme s = *find_scheme("midedge");  // edge midpoints
-    s.needs_closed_mesh = false;
+    Scheme s = midedge_scheme();  // edge midpoints
+    s.traits.needs_closed_mesh = false;
     return s;
   }();
-  if (split == SplitRule::dual) return dual;
-  if (split == SplitRule::midedge) return midedge;
-  return *find_scheme(split == SplitRule::quad ? "bilinear" : "linear");
+  switch (split) {
+    case SplitRule::sqrt2: return sqrt2;
+    case SplitRule::sqrt3: return sqrt3;
+    case SplitRule::dual: return dual;
+    case SplitRule::midedge: return midedge;
+    case SplitRule::quad: return bilinear_scheme();
+    default: return linear_scheme();
+  }
 }
 
 std::vector<Vec3> child_layout(SplitRule split, const RingMesh& ring, int levels) {

@@ -99,22 +99,22 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
   // One analysis step (the scheme's period: that many refinement steps,
   // composed) as a stencil table, and the split's own linear placement as
   // many levels down to find where each neighbourhood vertex went.
-  if (scheme.period < 1)
-    throw InvalidInputError(std::string(scheme.name) + ": period must be >= 1, not " + std::to_string(scheme.period));
+  if (scheme.traits.period < 1)
+    throw InvalidInputError(std::string(scheme.name) + ": period must be >= 1, not " + std::to_string(scheme.traits.period));
   RefineOptions once = rules;
-  once.levels = scheme.period;
+  once.levels = scheme.traits.period;
   once.on_level = nullptr;
   Scheme open = scheme;  // the ring mesh's outer boundary lies outside the neighbourhood
-  open.needs_closed_mesh = false;
+  open.traits.needs_closed_mesh = false;
   const StencilTable table = refine_stencil_table(ring.mesh, open, once);
   // A layout that is not linear (interior k = 2) names the images by the
   // split's numbering instead, one step down.
-  if (!ring.linear && scheme.period != 1)
+  if (!ring.linear && scheme.traits.period != 1)
     throw InvalidInputError(std::string(scheme.name) + ": " + configuration.name() +
                             " is analysed one refinement step at a time, not over a period of " +
-                            std::to_string(scheme.period));
-  const std::vector<Vec3> layout_child = ring.linear ? child_layout(scheme.split, ring, scheme.period) : std::vector<Vec3>{};
-  const double shrink = std::pow(arity(scheme.split), -scheme.period);
+                            std::to_string(scheme.traits.period));
+  const std::vector<Vec3> layout_child = ring.linear ? child_layout(scheme.split, ring, scheme.traits.period) : std::vector<Vec3>{};
+  const double shrink = std::pow(arity(scheme.split), -scheme.traits.period);
   std::vector<Index> all_child(layout_child.size());
   std::iota(all_child.begin(), all_child.end(), 0);
   const auto image_of = [&](Index v) {
@@ -126,7 +126,7 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
   m.configuration = configuration;
   m.rules = once;
   m.rings = rings;
-  m.period = scheme.period;
+  m.period = scheme.traits.period;
   const auto n = static_cast<Eigen::Index>(coarse.size());
   m.S = Eigen::MatrixXd::Zero(n, n);
   for (Eigen::Index a = 0; a < n; ++a) {
@@ -165,7 +165,7 @@ LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Conf
 LocalSubdivisionMatrix invariant_subdivision_matrix(const Scheme& scheme, const Configuration& configuration,
                                                     int max_rings, const RefineOptions& rules) {
   LocalSubdivisionMatrix m;
-  for (int rings = 1; rings <= max_rings; ++rings) {
+  for (int rings = 1; rings <= std::max(max_rings, scheme.traits.analysis_rings); ++rings) {
     m = local_subdivision_matrix(scheme, configuration, rings, rules);
     if (m.invariant) return m;
   }

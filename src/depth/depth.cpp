@@ -157,8 +157,9 @@ constexpr int kMaxDualStart = 6;
 constexpr std::int64_t kMaxDualStartFaces = std::int64_t{1} << 22;
 
 DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options) {
-  if (scheme.name != "doo-sabin")
-    throw InvalidInputError(std::string(scheme.name) + ": no depth bound for this dual-split scheme");
+  if (scheme.traits.paper_depth_bound != PaperDepthBound::doo_sabin_theorem_5)
+    throw InvalidInputError(std::string(scheme.name) + ": no depth bound for this dual-split scheme (the bound is "
+                            "written for Doo-Sabin's rules)");
   PolygonMesh level = refined(mesh, scheme, options, 1);
   std::map<int, DualFaceOperator> operators;
   const auto operator_at = [&](int k) -> const DualFaceOperator& {
@@ -171,7 +172,11 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
     std::vector<Index> extraordinary;
     for (Index f = 0; f < t.face_count(); ++f)
       if (t.face_size(f) != 4) extraordinary.push_back(f);
-    if (extraordinary.empty()) return doo_sabin_bound(max_second_difference(level), start);
+    if (extraordinary.empty()) {
+      DepthBound bound = doo_sabin_bound(max_second_difference(level), start);
+      bound.scheme = std::string(scheme.name);
+      return bound;
+    }
     // Faces at the boundary stay there, outside the canonical layout: their
     // operator is read off this level's step to the next, once the next
     // level's neighbourhood repeats this one's.
@@ -236,6 +241,7 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
     }
     const double second_difference = max_second_difference(level);
     DepthBound bound = doo_sabin_bound(second_difference, start);
+    bound.scheme = std::string(scheme.name);
     bound.source = "paper (regular) + local subdivision matrix (extraordinary)";
     // Near the faces the regular term's second differences are bounded by
     // the faces' own term, so the two together hold everywhere from `start`
@@ -270,8 +276,8 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
                        const SourceLines* lines) {
   // Two steps of 4-8 are a quad-split scheme's level (Scheme::two_steps):
   // the bound is that scheme's, counted in levels of two steps.
-  if (scheme.two_steps) {
-    DepthBound bound = depth_bound(mesh, *scheme.two_steps, options, lines);
+  if (scheme.fast_path.two_steps) {
+    DepthBound bound = depth_bound(mesh, *scheme.fast_path.two_steps, options, lines);
     bound.scheme = std::string(scheme.name);
     bound.steps_per_level = 2;
     return bound;
@@ -300,10 +306,12 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   // distances of the new vertices decay like |lambda_1| there, slower than
   // the paper's rate: measured, the paper's Loop bound fails on meshes with
   // valence 8 or 32 (docs/design.md, "Depth"). That term is added.
-  const bool paper_scheme = scheme.name == "loop" || scheme.name == "catmull-clark";
-  if (paper_scheme) {
-    DepthBound bound = scheme.name == "loop" ? loop_paper_bound(distances.max, max_valence(first))
-                                             : cheng_catmull_clark_bound(max_second_difference(first), start);
+  const PaperDepthBound paper = scheme.traits.paper_depth_bound;
+  if (paper == PaperDepthBound::loop_theorem_3 || paper == PaperDepthBound::cheng_catmull_clark) {
+    DepthBound bound = paper == PaperDepthBound::loop_theorem_3
+                           ? loop_paper_bound(distances.max, max_valence(first))
+                           : cheng_catmull_clark_bound(max_second_difference(first), start);
+    bound.scheme = std::string(scheme.name);
     const WorstRate extraordinary = worst_rate(level, scheme, true);
     if (!extraordinary.where.empty()) {
       bound.source = "paper (regular) + analysis (extraordinary)";
@@ -324,7 +332,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
 }
 
 std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme, int levels) {
-  if (scheme.two_steps) return level_costs(mesh, *scheme.two_steps, levels);  // levels of two steps, as its bound
+  if (scheme.fast_path.two_steps) return level_costs(mesh, *scheme.fast_path.two_steps, levels);  // levels of two steps, as its bound
   const MeshTopology t(mesh);
   LevelCost cost{0, mesh.vertex_count(), mesh.face_count(), t.edge_count(), mesh.corner_count(), 0};
   // Dual split: boundary and V-face counts of the current level.

@@ -50,7 +50,7 @@ DepthBound loop_paper_bound(double max_limit_distance, int max_valence) {
   // Refinement creates valence-6 vertices, so n is at least 6 (paper,
   // discussion of Figure 12); 5/8 - n beta grows with n.
   const int n = std::max(6, max_valence);
-  return {"loop",
+  return {"",
           "paper",
           0,
           {{"largest control-vertex-to-limit distance, contracted by 5/8 - n beta at n = " + std::to_string(n) +
@@ -59,7 +59,7 @@ DepthBound loop_paper_bound(double max_limit_distance, int max_valence) {
 }
 
 DepthBound cheng_catmull_clark_bound(double max_second_difference, int start) {
-  return {"catmull-clark",
+  return {"",
           "paper",
           start,
           {{"(1/3) x largest second difference, contracted by 1/4 (Cheng; paper, Theorem 2)",
@@ -67,7 +67,7 @@ DepthBound cheng_catmull_clark_bound(double max_second_difference, int start) {
 }
 
 DepthBound doo_sabin_bound(double max_second_difference, int start) {
-  return {"doo-sabin",
+  return {"",
           "paper",
           start,
           {{"(1/4) x largest second difference after " + std::to_string(start) +

@@ -223,7 +223,7 @@ DualFaceOperator dual_face_operator(const Scheme& scheme, int k, const RefineOpt
         column[static_cast<std::size_t>(v)] = j;
   const auto col = [&](Index v) { return column[static_cast<std::size_t>(v)]; };
   Scheme open = scheme;  // the ring mesh's outer boundary lies outside the neighbourhood
-  open.needs_closed_mesh = false;
+  open.traits.needs_closed_mesh = false;
   RefineOptions once = rules;
   once.levels = 1;
   once.on_level = nullptr;

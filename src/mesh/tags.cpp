@@ -27,6 +27,16 @@ const char* to_string(CreaseMethod c) {
   return c == CreaseMethod::uniform ? "uniform" : "chaikin";
 }
 
+std::optional<CreaseMethod> crease_method_named(std::string_view name) {
+  for (const CreaseMethod c : {CreaseMethod::uniform, CreaseMethod::chaikin})
+    if (name == to_string(c)) return c;
+  return std::nullopt;
+}
+
+std::vector<std::string> crease_method_names() {
+  return {to_string(CreaseMethod::uniform), to_string(CreaseMethod::chaikin)};
+}
+
 const char* to_string(TriangleSubdivision t) {
   return t == TriangleSubdivision::catmark ? "catmark" : "smooth";
 }

@@ -86,7 +86,8 @@ std::shared_ptr<const FlatnessSpectrum> flatness_spectrum(const Scheme& scheme, 
   // and go.
   using Key = std::tuple<std::string, double, int, double>;
   static std::map<Key, std::shared_ptr<const FlatnessSpectrum>> cache;
-  const Key key{std::string(scheme.name), scheme.parameters.tension, k, alpha};
+  const TensionParameters* tension = tension_parameters(scheme.parameters);
+  const Key key{std::string(scheme.name), tension ? tension->tension : 0.0, k, alpha};
   {
     const std::lock_guard lock(mutex);
     if (auto it = cache.find(key); it != cache.end()) return it->second;

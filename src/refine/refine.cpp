@@ -55,38 +55,38 @@ void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap&
   mask.clear();
   const LevelView& view = parent.view();
   if (map.rule == SplitRule::dual) {
-    if (i < map.edge_points) return scheme.corner_point(view, i - map.corner_points, mask);
+    if (i < map.edge_points) return scheme.masks.corner_point(view, i - map.corner_points, mask);
     const Index boundary = (i - map.edge_points) / 2;
     const Index e = map.boundary_edges[static_cast<std::size_t>(boundary)];
-    return scheme.boundary_point(view, e, view.topology.edge_vertices(e)[(i - map.edge_points) % 2], mask);
+    return scheme.masks.boundary_point(view, e, view.topology.edge_vertices(e)[(i - map.edge_points) % 2], mask);
   }
-  if (i < map.edge_points) return scheme.face_point(view, map.point_face(i - map.face_points), mask);
+  if (i < map.edge_points) return scheme.masks.face_point(view, map.point_face(i - map.face_points), mask);
   if (map.rule == SplitRule::sqrt3 && i < map.vertex_points) {  // boundary points, as the dual split's
     const Index boundary = (i - map.edge_points) / 2;
     const Index e = map.boundary_edges[static_cast<std::size_t>(boundary)];
-    return scheme.boundary_point(view, e, view.topology.edge_vertices(e)[(i - map.edge_points) % 2], mask);
+    return scheme.masks.boundary_point(view, e, view.topology.edge_vertices(e)[(i - map.edge_points) % 2], mask);
   }
   if (i < map.vertex_points) {
     const Index e = i - map.edge_points;
-    if (edge_sharpness_of(parent.creasing, e) <= 0.0) return scheme.edge_point(view, e, EdgeRule::smooth, mask);
+    if (edge_sharpness_of(parent.creasing, e) <= 0.0) return scheme.masks.edge_point(view, e, EdgeRule::smooth, mask);
     const double c = edge_crease_weight(parent.creasing, e);  // the crease rule's share: 1, or s
-    if (c == 1.0) return scheme.edge_point(view, e, EdgeRule::crease, mask);
+    if (c == 1.0) return scheme.masks.edge_point(view, e, EdgeRule::crease, mask);
     mask.set_scale(1.0 - c);
-    scheme.edge_point(view, e, EdgeRule::smooth, mask);
+    scheme.masks.edge_point(view, e, EdgeRule::smooth, mask);
     mask.set_scale(c);
-    return scheme.edge_point(view, e, EdgeRule::crease, mask);
+    return scheme.masks.edge_point(view, e, EdgeRule::crease, mask);
   }
   const Index v = i - map.vertex_points;
   const auto vi = static_cast<std::size_t>(v);
   const VertexRule rule = parent.creasing.vertex_rule[vi];
   const VertexRule child_rule = parent.creasing.child_vertex_rule[vi];
   const double w = parent.creasing.parent_rule_weight.empty() ? 1.0 : parent.creasing.parent_rule_weight[vi];
-  if (rule == child_rule || w >= 1.0) return scheme.vertex_point(view, v, rule, mask);
+  if (rule == child_rule || w >= 1.0) return scheme.masks.vertex_point(view, v, rule, mask);
   mask.set_scale(1.0 - w);
-  scheme.vertex_point(parent.child_view(), v, child_rule, mask);
+  scheme.masks.vertex_point(parent.child_view(), v, child_rule, mask);
   if (w <= 0.0) return;
   mask.set_scale(w);
-  scheme.vertex_point(view, v, rule, mask);
+  scheme.masks.vertex_point(view, v, rule, mask);
 }
 
 // Runs fn(i, mask) for child vertices [begin, end), in parallel.
@@ -109,7 +109,7 @@ void for_each_child_mask(const ParentLevel& parent, const Scheme& scheme, const 
 // the new edge points.
 template <typename Range>
 void in_mask_order(const Scheme& scheme, const SplitMap& map, Range&& range) {
-  if (scheme.face_points_read_edge_points) {
+  if (scheme.masks.face_points_read_edge_points) {
     range(map.edge_points, map.child_vertex_count);
     return range(0, map.edge_points);
   }
@@ -203,10 +203,10 @@ Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, int 
 }
 
 // Whether the engine may take two steps of `scheme` as one level of
-// scheme.two_steps on this level: its masks read closed manifold levels,
+// scheme.fast_path.two_steps on this level: its masks read closed manifold levels,
 // and face-varying values follow the steps' own splits.
 bool takes_two_steps(const Scheme& scheme, const PolygonMesh& mesh, const MeshTopology& topology) {
-  if (!scheme.two_steps || !mesh.face_varying_channels.empty()) return false;
+  if (!scheme.fast_path.two_steps || !mesh.face_varying_channels.empty()) return false;
   for (Index e = 0; e < topology.edge_count(); ++e)
     if (topology.edge_face_count(e) != 2) return false;
   return true;
@@ -215,7 +215,7 @@ bool takes_two_steps(const Scheme& scheme, const PolygonMesh& mesh, const MeshTo
 // The levels one after the other, each parent's topology derived from its
 // own parent's where the split allows it (a manifold level), built from the
 // faces otherwise; `step(parent, topology, l, level_scheme)` refines one
-// level with `scheme`, or two with scheme.two_steps where they apply.
+// level with `scheme`, or two with scheme.fast_path.two_steps where they apply.
 template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
                           const RefineOptions& options, Step&& step,
@@ -229,7 +229,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
   for (int l = options.start_level; l < last;) {
     if (!topology) topology.emplace(current);
     const bool twice = !every_level && l + 2 <= last && takes_two_steps(scheme, current, *topology);
-    const Scheme& level_scheme = twice ? *scheme.two_steps : scheme;
+    const Scheme& level_scheme = twice ? *scheme.fast_path.two_steps : scheme;
     Level level = step(current, *topology, l, level_scheme);
     l += twice ? 2 : 1;
     if (l == last) topology.reset();
@@ -305,7 +305,7 @@ void evaluate_points(const PolygonMesh& parent, const Scheme& scheme, const Pare
       mask.reserve(64);
       for (Index i = r.begin(); i != r.end(); ++i) {
         Vec3& p = out[static_cast<std::size_t>(i)];
-        if (scheme.evaluate_point(view.view(), map, i, in, out, p)) continue;
+        if (scheme.fast_path.point(view.view(), map, i, in, out, p)) continue;
         child_mask(view, scheme, map, i, mask);
         p = apply_mask(mask, map, in.data(), out.data());
       }
@@ -322,15 +322,15 @@ void evaluate_fast(const PolygonMesh& parent, const Scheme& scheme, const Parent
                                  std::vector<double>(static_cast<std::size_t>(level.map.child_vertex_count) *
                                                      static_cast<std::size_t>(in.components))};
   }
-  if (parent.vertex_channels.empty() && scheme.evaluate_point && !scheme.evaluate_positions)
+  if (parent.vertex_channels.empty() && scheme.fast_path.point && !scheme.fast_path.positions)
     return evaluate_points(parent, scheme, view, level);
-  if (scheme.evaluate_positions) {
-    scheme.evaluate_positions(view.topology, level.map, parent.positions, child.positions);
+  if (scheme.fast_path.positions) {
+    scheme.fast_path.positions(view.topology, level.map, parent.positions, child.positions);
     if (parent.vertex_channels.empty()) return;
   }
   for_each_child_mask(view, scheme, level.map, [&](Index i, const MaskBuilder& mask) {
     const auto at = static_cast<std::size_t>(i);
-    if (!scheme.evaluate_positions)
+    if (!scheme.fast_path.positions)
       child.positions[at] = apply_mask(mask, level.map, parent.positions.data(), child.positions.data());
     for (std::size_t ch = 0; ch < parent.vertex_channels.size(); ++ch) {
       const auto k = static_cast<std::size_t>(parent.vertex_channels[ch].components);
@@ -350,7 +350,7 @@ StencilTable record_stencils(const ParentLevel& view, const Scheme& scheme, cons
   const Index sources = composed ? composed->source_count() : view.topology.vertex_count();
   StencilTable table(sources);
   StencilTable edge_first(sources);  // rows edge_points .. end, where recorded before the face points
-  const bool faces_last = scheme.face_points_read_edge_points;
+  const bool faces_last = scheme.masks.face_points_read_edge_points;
   tbb::enumerable_thread_specific<MaskBuilder> masks;
   auto fill = [&](Index i, detail::RowAccumulator& row) {
     MaskBuilder& mask = masks.local();
@@ -464,7 +464,7 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
         issue.message += " (allowing non-manifold input, subdiv refine --allow-non-manifold, makes it sharp)";
     require_valid(report, path);
   }
-  if (scheme.needs_closed_mesh)
+  if (scheme.traits.needs_closed_mesh)
     for (Index v = 0; v < mesh.vertex_count(); ++v)
       if (topology.vertex_kind(v) == VertexKind::boundary)
         throw InvalidInputError(where(lines, &SourceLines::vertex_lines, static_cast<std::size_t>(v)) +
@@ -478,8 +478,8 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
                                 std::string(scheme.name) + " needs a " + kind + " mesh, but face " + std::to_string(f) +
                                 " has " + std::to_string(mesh.face_size(f)) + " vertices (" + remedy + ")");
   };
-  if (scheme.needs_triangles) require_faces_of(3, "triangle", "triangulate it first, e.g. with --triangulate");
-  if (scheme.needs_quads) require_faces_of(4, "quad", "one bilinear or catmull-clark level first makes every face a quad");
+  if (scheme.traits.needs_triangles) require_faces_of(3, "triangle", "triangulate it first, e.g. with --triangulate");
+  if (scheme.traits.needs_quads) require_faces_of(4, "quad", "one bilinear or catmull-clark level first makes every face a quad");
   return topology;
 }
 

@@ -16,9 +16,13 @@ void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { ma
 }  // namespace
 
 const Scheme& bilinear_scheme() {
-  static const Scheme scheme{"bilinear", "interpolating baseline, quad split: face centroids, edge midpoints",
-                             "bilinear refinement (OpenSubdiv's SCHEME_BILINEAR)", SplitRule::quad, false,
-                             face_point, edge_point, vertex_point};
+  static const Scheme scheme{
+      .name = "bilinear",
+      .summary = "interpolating baseline, quad split: face centroids, edge midpoints",
+      .citation = "bilinear refinement (OpenSubdiv's SCHEME_BILINEAR)",
+      .split = SplitRule::quad,
+      .traits = {.interpolating = true},
+      .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point}};
   return scheme;
 }
 

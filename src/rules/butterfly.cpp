@@ -213,7 +213,7 @@ void butterfly_edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBu
   if (rule == EdgeRule::crease || level.topology.edge_face_count(e) != 2) return crease_edge_point(level, e, mask);
   const auto [a, b] = level.topology.edge_vertices(e);
   const bool on_crease = detail::sharp_edge_count(level, a, e) >= 2 || detail::sharp_edge_count(level, b, e) >= 2;
-  if (!on_crease && add_eight_point(level, e, level.parameters.tension, mask)) return;
+  if (!on_crease && add_eight_point(level, e, level.tension(), mask)) return;
   modified_edge_point(level, e, mask);
 }
 
@@ -223,22 +223,26 @@ void interpolating_vertex_point(const LevelView&, Index v, VertexRule, MaskBuild
 
 const Scheme& butterfly_scheme() {
   static const Scheme scheme{
-      "butterfly",
-      "interpolating, triangle split, triangle meshes; the 8-point rule, tension w (default 1/16); C1 on regular meshes",
-      "N. Dyn, D. Levin, J. A. Gregory: A butterfly subdivision scheme for surface interpolation with tension "
+      .name = "butterfly",
+      .summary = "interpolating, triangle split, triangle meshes; the 8-point rule, tension w (default 1/16); C1 on regular meshes",
+      .citation = "N. Dyn, D. Levin, J. A. Gregory: A butterfly subdivision scheme for surface interpolation with tension "
       "control, ACM Transactions on Graphics 9(2), 1990",
-      SplitRule::triangle, true, nullptr, butterfly_edge_point, interpolating_vertex_point, nullptr, nullptr,
-      nullptr, SchemeParameters{kButterflyTension}, true};
+      .split = SplitRule::triangle,
+      .traits = {.interpolating = true, .needs_triangles = true},
+      .masks = {.edge_point = butterfly_edge_point, .vertex_point = interpolating_vertex_point},
+      .parameters = TensionParameters{kButterflyTension}};
   return scheme;
 }
 
 const Scheme& modified_butterfly_scheme() {
   static const Scheme scheme{
-      "modified-butterfly",
-      "interpolating, triangle split, triangle meshes; Butterfly with rules for extraordinary and crease vertices",
-      "D. Zorin, P. Schroeder, W. Sweldens: Interpolating subdivision for meshes with arbitrary topology, "
+      .name = "modified-butterfly",
+      .summary = "interpolating, triangle split, triangle meshes; Butterfly with rules for extraordinary and crease vertices",
+      .citation = "D. Zorin, P. Schroeder, W. Sweldens: Interpolating subdivision for meshes with arbitrary topology, "
       "SIGGRAPH 1996; boundary rules from D. Zorin's survey, section 4",
-      SplitRule::triangle, true, nullptr, modified_butterfly_edge_point, interpolating_vertex_point, nullptr};
+      .split = SplitRule::triangle,
+      .traits = {.interpolating = true, .needs_triangles = true},
+      .masks = {.edge_point = modified_butterfly_edge_point, .vertex_point = interpolating_vertex_point}};
   return scheme;
 }
 

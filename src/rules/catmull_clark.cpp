@@ -143,10 +143,13 @@ double catmull_clark_subdominant_eigenvalue(int valence) { return subdominant_ei
 
 const Scheme& catmull_clark_scheme() {
   static const Scheme scheme{
-      "catmull-clark",
-      "approximating, quad split, any polygon mesh; C2 bicubic B-spline on regular quads, C1 elsewhere",
-      "E. Catmull, J. Clark: Recursively generated B-spline surfaces on arbitrary topological meshes, CAD 10(6), 1978",
-      SplitRule::quad, false, face_point, edge_point, vertex_point, limit_masks};
+      .name = "catmull-clark",
+      .summary = "approximating, quad split, any polygon mesh; C2 bicubic B-spline on regular quads, C1 elsewhere",
+      .citation = "E. Catmull, J. Clark: Recursively generated B-spline surfaces on arbitrary topological meshes, CAD 10(6), 1978",
+      .split = SplitRule::quad,
+      .traits = {.paper_depth_bound = PaperDepthBound::cheng_catmull_clark},
+      .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point},
+      .limit_masks = limit_masks};
   return scheme;
 }
 

@@ -66,18 +66,13 @@ void boundary_point(const LevelView& level, Index edge, Index vertex, MaskBuilde
 
 const Scheme& doo_sabin_scheme() {
   static const Scheme scheme{
-      "doo-sabin",
-      "approximating, dual split, any polygon mesh; the biquadratic B-spline on regular quad meshes, C1",
-      "D. Doo, M. Sabin: Behaviour of recursive division surfaces near extraordinary points, Computer-Aided "
+      .name = "doo-sabin",
+      .summary = "approximating, dual split, any polygon mesh; the biquadratic B-spline on regular quad meshes, C1",
+      .citation = "D. Doo, M. Sabin: Behaviour of recursive division surfaces near extraordinary points, Computer-Aided "
       "Design 10(6), 1978; boundaries by Doo's replicated edges (Zorin's survey, section 4.1)",
-      SplitRule::dual,
-      false,
-      nullptr,
-      nullptr,
-      nullptr,
-      nullptr,
-      corner_point,
-      boundary_point};
+      .split = SplitRule::dual,
+      .traits = {.paper_depth_bound = PaperDepthBound::doo_sabin_theorem_5},
+      .masks = {.corner_point = corner_point, .boundary_point = boundary_point}};
   return scheme;
 }
 

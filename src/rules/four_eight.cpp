@@ -154,38 +154,28 @@ void two_step_positions(const MeshTopology& t, const SplitMap& map, std::span<co
 }  // namespace
 
 const Scheme& four_eight_two_steps_scheme() {
-  static const Scheme scheme = [] {
-    Scheme s{"four-eight (two steps)",
-             "two four-eight steps as one quad split (closed meshes)",
-             "L. Velho, D. Zorin: 4-8 subdivision, CAGD 18(5), 2001 (regular rules from its box spline)",
-             SplitRule::quad,
-             false,
-             two_step_face_point,
-             two_step_edge_point,
-             two_step_vertex_point};
-    s.needs_closed_mesh = true;
-    s.evaluate_positions = two_step_positions;
-    return s;
-  }();
+  static const Scheme scheme{
+      .name = "four-eight (two steps)",
+      .summary = "two four-eight steps as one quad split (closed meshes)",
+      .citation = "L. Velho, D. Zorin: 4-8 subdivision, CAGD 18(5), 2001 (regular rules from its box spline)",
+      .split = SplitRule::quad,
+      .traits = {.needs_closed_mesh = true},
+      .masks = {.face_point = two_step_face_point, .edge_point = two_step_edge_point,
+                .vertex_point = two_step_vertex_point},
+      .fast_path = {.positions = two_step_positions}};
   return scheme;
 }
 
 const Scheme& four_eight_scheme() {
-  static const Scheme scheme = [] {
-    Scheme s{"four-eight",
-             "approximating, sqrt2 split (arity sqrt 2), closed polygon meshes; 4-8 on quads, the C4 box spline on "
-             "regular meshes (extraordinary vertices: the same averaging, not the paper's rule)",
-             "L. Velho, D. Zorin: 4-8 subdivision, CAGD 18(5), 2001 (regular rules from its box spline)",
-             SplitRule::sqrt2,
-             false,
-             face_point,
-             nullptr,
-             vertex_point};
-    s.period = 2;  // the layout turns by 45 degrees on each step
-    s.needs_closed_mesh = true;
-    s.two_steps = &four_eight_two_steps_scheme();
-    return s;
-  }();
+  static const Scheme scheme{
+      .name = "four-eight",
+      .summary = "approximating, sqrt2 split (arity sqrt 2), closed polygon meshes; 4-8 on quads, the C4 box spline "
+                 "on regular meshes (extraordinary vertices: the same averaging, not the paper's rule)",
+      .citation = "L. Velho, D. Zorin: 4-8 subdivision, CAGD 18(5), 2001 (regular rules from its box spline)",
+      .split = SplitRule::sqrt2,
+      .traits = {.needs_closed_mesh = true, .period = 2},  // the layout turns by 45 degrees on each step
+      .masks = {.face_point = face_point, .vertex_point = vertex_point},
+      .fast_path = {.two_steps = &four_eight_two_steps_scheme()}};
   return scheme;
 }
 

@@ -61,7 +61,7 @@ void smoothing_point(const LevelView& level, Index v, VertexRule rule, MaskBuild
   const MeshTopology& t = level.topology;
   if (rule != VertexRule::smooth || t.vertex_kind(v) != VertexKind::interior) return mask.add(v, 1.0);
   const int m = t.valence(v);
-  const auto [alpha, beta] = level.parameters.smoothing.front().at(m);
+  const auto [alpha, beta] = std::get<DegreeParameters>(level.parameters).smoothing.front().at(m);
   const double gamma = 1.0 - alpha - beta;
   mask.add(v, alpha);
   for (const Index e : t.vertex_edges(v)) mask.add(t.other_vertex(e, v), beta / m);
@@ -100,27 +100,23 @@ void averaging_boundary(const LevelView& level, Index edge, Index vertex, MaskBu
 
 const Scheme& smoothing_step() {
   static const Scheme scheme = [] {
-    Scheme s;
-    s.name = "smoothing B";
-    s.summary = "B_{alpha,beta}: each interior vertex of a quad mesh an affine combination of its 1-ring";
-    s.citation = "Q. Chen, H. Prautzsch: Generalized Catmull-Clark subdivision, 2012, Figure 1.3";
-    s.split = SplitRule::identity;
-    s.vertex_point = smoothing_point;
-    return s;
+    return Scheme{.name = "smoothing B",
+                  .summary = "B_{alpha,beta}: each interior vertex of a quad mesh an affine combination of its 1-ring",
+                  .citation = "Q. Chen, H. Prautzsch: Generalized Catmull-Clark subdivision, 2012, Figure 1.3",
+                  .split = SplitRule::identity,
+                  .masks = {.vertex_point = smoothing_point},
+                  .parameters = DegreeParameters{}};
   }();
   return scheme;
 }
 
 const Scheme& averaging_step() {
   static const Scheme scheme = [] {
-    Scheme s;
-    s.name = "averaging A";
-    s.summary = "A after R: the dual mesh of the quad mesh's face centres";
-    s.citation = "Q. Chen, H. Prautzsch: Generalized Catmull-Clark subdivision, 2012, Figure 1.1";
-    s.split = SplitRule::dual;
-    s.corner_point = averaging_corner;
-    s.boundary_point = averaging_boundary;
-    return s;
+    return Scheme{.name = "averaging A",
+                  .summary = "A after R: the dual mesh of the quad mesh's face centres",
+                  .citation = "Q. Chen, H. Prautzsch: Generalized Catmull-Clark subdivision, 2012, Figure 1.1",
+                  .split = SplitRule::dual,
+                  .masks = {.corner_point = averaging_corner, .boundary_point = averaging_boundary}};
   }();
   return scheme;
 }
@@ -128,7 +124,7 @@ const Scheme& averaging_step() {
 void check_weights(double alpha, double beta, int step, const std::string& where) {
   if (!(std::isfinite(alpha) && std::isfinite(beta) && alpha >= 0.0 && beta >= 0.0 && alpha + beta > 0.0 &&
         alpha + beta < 1.0))
-    throw InvalidInputError(fmt::format("B_{}{}: alpha = {}, beta = {} lie outside the paper's range (alpha, beta >= "
+    throw ParameterError(fmt::format("B_{}{}: alpha = {}, beta = {} lie outside the paper's range (alpha, beta >= "
                                         "0, 0 < alpha + beta < 1)",
                                         step, where, alpha, beta));
 }
@@ -137,43 +133,62 @@ void check_smoothing(const SmoothingWeights& w, int step) {
   if (w.rule == SmoothingWeights::Rule::constant) check_weights(w.alpha, w.beta, step, "");
   for (const SmoothingWeights::AtValence& v : w.valences) {
     if (v.valence < 3)
-      throw InvalidInputError(fmt::format("B_{}: valence {} has no weights (interior valences are >= 3)", step, v.valence));
+      throw ParameterError(fmt::format("B_{}: valence {} has no weights (interior valences are >= 3)", step, v.valence));
     check_weights(v.alpha, v.beta, step, fmt::format(" at valence {}", v.valence));
   }
 }
 
+// A level of degree n reads n / 2 + 1 face rings around a vertex (R, then
+// r smoothing steps of one ring each, then A).
+int analysis_rings_of_degree(int n) { return n / 2 + 1; }
+
 std::vector<Scheme> steps_of(const SchemeParameters& parameters) { return generalized_catmull_clark_steps(parameters); }
 
-Scheme composite(std::string_view name, std::string_view summary, std::string_view citation,
-                 SmoothingWeights weights) {
-  Scheme s;
-  s.name = name;
-  s.summary = summary;
-  s.citation = citation;
-  s.split = SplitRule::quad;
-  s.parameters.degree = 3;
-  s.parameters.smoothing = {std::move(weights)};
-  s.steps = steps_of;
-  return s;
+// The family's parameter check: the degree, the count of smoothing
+// operators and each operator's weights.
+void check_degree(std::string_view, const SchemeParameters& parameters) { generalized_catmull_clark_steps(parameters); }
+
+// Midpoint subdivision's smoothing is A^2 (alpha = 1/4, beta = 1/2) at every
+// valence; other weights make another member of the generalized family.
+void check_midpoint(std::string_view name, const SchemeParameters& parameters) {
+  check_degree(name, parameters);
+  for (const SmoothingWeights& w : std::get<DegreeParameters>(parameters).smoothing)
+    if (w.rule != SmoothingWeights::Rule::constant || w.alpha != 0.25 || w.beta != 0.5 || !w.valences.empty())
+      throw ParameterError(std::string(name) + " has alpha = 1/4, beta = 1/2 (midpoint subdivision): give other "
+                           "weights to " + std::string(generalized_catmull_clark_scheme().name));
+}
+
+Scheme composite(std::string_view name, std::string_view summary, std::string_view citation, SmoothingWeights weights,
+                 ParameterCheck check) {
+  return Scheme{.name = name,
+                .summary = summary,
+                .citation = citation,
+                .split = SplitRule::quad,
+                .traits = {.analysis_rings = analysis_rings_of_degree(3)},
+                .steps = steps_of,
+                .parameters = DegreeParameters{.degree = 3, .smoothing = {std::move(weights)}},
+                .parameter_check = check};
 }
 
 }  // namespace
 
 std::vector<Scheme> generalized_catmull_clark_steps(const SchemeParameters& parameters) {
-  const int n = parameters.degree;
-  if (n < 2) throw InvalidInputError("generalized Catmull-Clark: the degree must be >= 2, not " + std::to_string(n));
+  const DegreeParameters* degree = degree_parameters(parameters);
+  if (!degree) throw ParameterError("generalized Catmull-Clark: the parameters hold no degree");
+  const int n = degree->degree;
+  if (n < 2) throw ParameterError("generalized Catmull-Clark: the degree must be >= 2, not " + std::to_string(n));
   const int r = (n - 1) / 2;
-  const auto given = static_cast<int>(parameters.smoothing.size());
+  const auto given = static_cast<int>(degree->smoothing.size());
   if (r > 0 && given != 1 && given != r)
-    throw InvalidInputError(fmt::format("degree {} has {} smoothing operators B_1 .. B_{}, but {} sets of weights are "
+    throw ParameterError(fmt::format("degree {} has {} smoothing operators B_1 .. B_{}, but {} sets of weights are "
                                         "given (give 1 for all of them, or {})",
                                         n, r, r, given, r));
   std::vector<Scheme> steps{bilinear_scheme()};  // R
   for (int i = 0; i < r; ++i) {
-    const SmoothingWeights& w = parameters.smoothing[static_cast<std::size_t>(given == 1 ? 0 : i)];
+    const SmoothingWeights& w = degree->smoothing[static_cast<std::size_t>(given == 1 ? 0 : i)];
     check_smoothing(w, i + 1);
     Scheme b = smoothing_step();
-    b.parameters.smoothing = {w};
+    std::get<DegreeParameters>(b.parameters).smoothing = {w};
     steps.push_back(std::move(b));
   }
   if (n % 2 == 0) steps.push_back(averaging_step());
@@ -181,13 +196,16 @@ std::vector<Scheme> generalized_catmull_clark_steps(const SchemeParameters& para
 }
 
 void set_degree(Scheme& scheme, int degree) {
-  if (!scheme.steps) throw InvalidInputError(std::string(scheme.name) + " has no degree (only gcc and midpoint have)");
-  if (degree < 2) throw InvalidInputError("--degree must be >= 2, not " + std::to_string(degree));
-  scheme.parameters.degree = degree;
+  DegreeParameters* parameters = degree_parameters(scheme.parameters);
+  if (!parameters || !scheme.steps) throw ParameterError(std::string(scheme.name) + " has no degree");
+  if (degree < 2) throw ParameterError(std::string(scheme.name) + ": the degree must be >= 2, not " + std::to_string(degree));
+  parameters->degree = degree;
+  scheme.traits.analysis_rings = analysis_rings_of_degree(degree);
   scheme.split = degree % 2 == 1 ? SplitRule::quad : SplitRule::dual;
 }
 
-std::string describe_smoothing(const SchemeParameters& p) {
+std::string describe_smoothing(const SchemeParameters& parameters) {
+  const DegreeParameters& p = std::get<DegreeParameters>(parameters);
   std::string out = "n=" + std::to_string(p.degree);
   const int r = (p.degree - 1) / 2;
   const bool shared = p.smoothing.size() == 1;
@@ -212,7 +230,7 @@ const Scheme& generalized_catmull_clark_scheme() {
                      "for odd n, dual for even n); default n = 3 with Catmull-Clark's weights",
                      "Q. Chen, H. Prautzsch: Generalized Catmull-Clark subdivision, Karlsruhe Reports in Informatics "
                      "2012,16",
-                     cc);
+                     cc, check_degree);
   }();
   return scheme;
 }
@@ -223,7 +241,7 @@ const Scheme& midpoint_scheme() {
                             "for odd n, dual for even n); B-splines of degree n on regular quads",
                 "H. Prautzsch, Q. Chen: Analyzing midpoint subdivision, CAGD 28(7), 2011; as A^(n-1) R of Chen, "
                 "Prautzsch 2012",
-                SmoothingWeights{});
+                SmoothingWeights{}, check_midpoint);
   return scheme;
 }
 

@@ -318,22 +318,16 @@ void boundary_point(const LevelView& level, Index e, Index v, MaskBuilder& mask)
 }  // namespace
 
 const Scheme& interpolatory_sqrt3_scheme() {
-  static const Scheme scheme = [] {
-    Scheme s{"interpolatory-sqrt3",
-             "interpolating, sqrt3 split (arity sqrt 3), triangles; a 12-point rule, extraordinary rules at "
-             "valence != 6, the ternary four-point rule on boundaries",
-             "U. Labsik, G. Greiner: Interpolatory sqrt(3)-subdivision, Eurographics 2000 (weights as in OpenMesh's "
-             "InterpolatingSqrt3LGT)",
-             SplitRule::sqrt3,
-             true,
-             face_point,
-             nullptr,
-             vertex_point};
-    s.boundary_point = boundary_point;
-    s.evaluate_point = evaluate_point;
-    s.period = 2;
-    return s;
-  }();
+  static const Scheme scheme{
+      .name = "interpolatory-sqrt3",
+      .summary = "interpolating, sqrt3 split (arity sqrt 3), triangles; a 12-point rule, extraordinary rules at "
+                 "valence != 6, the ternary four-point rule on boundaries",
+      .citation = "U. Labsik, G. Greiner: Interpolatory sqrt(3)-subdivision, Eurographics 2000 (weights as in "
+                  "OpenMesh's InterpolatingSqrt3LGT)",
+      .split = SplitRule::sqrt3,
+      .traits = {.interpolating = true, .needs_triangles = true, .period = 2},
+      .masks = {.face_point = face_point, .vertex_point = vertex_point, .boundary_point = boundary_point},
+      .fast_path = {.point = evaluate_point}};
   return scheme;
 }
 

@@ -142,7 +142,7 @@ bool add_sector_virtual_point(const LevelView& level, Index v, Index e, bool cor
   for (int j = 0; j < k; ++j)
     if (t.face_size(t.corner_face(face_corner(j))) != 4) return false;
   auto r = [&](int j) { return opposite_in_quad(t, face_corner(j)); };
-  const double c = kobbelt_diagonal_weight(level.parameters.tension);
+  const double c = kobbelt_diagonal_weight(level.tension());
   const int spoke = i - first;  // 1 .. k-1
   mask.add(v, 2.0 * s);
   if (corner) {
@@ -210,7 +210,7 @@ void add_beyond(const LevelView& level, Index v, Index e, double s, MaskBuilder&
   const auto corners = t.vertex_corners(v);
   for (const Index c : corners)
     if (t.face_size(t.corner_face(c)) != 4) return extrapolate();
-  const KobbeltVirtualWeights w = kobbelt_virtual_point_weights(n, i, level.parameters.tension);
+  const KobbeltVirtualWeights w = kobbelt_virtual_point_weights(n, i, level.tension());
   for (int j = 0; j < n; ++j) {
     const auto jj = static_cast<std::size_t>(j);
     mask.add(t.other_vertex(edges[jj], v), s * w.edge_neighbours[jj]);
@@ -220,7 +220,7 @@ void add_beyond(const LevelView& level, Index v, Index e, double s, MaskBuilder&
 
 // Adds s times the four-point edge point of e.
 void add_edge_point(const LevelView& level, Index e, double s, MaskBuilder& mask) {
-  const double w = level.parameters.tension;
+  const double w = level.tension();
   const auto [a, b] = level.topology.edge_vertices(e);
   mask.add(a, s * (0.5 + w));
   mask.add(b, s * (0.5 + w));
@@ -243,7 +243,7 @@ Index edge_beyond(const LevelView& level, Index c) {
 // Adds s times the four-point rule along the line through the new edge
 // points of corner c's edge and of the opposite edge (corner g).
 void add_face_line(const LevelView& level, Index c, Index g, double s, MaskBuilder& mask) {
-  const double w = level.parameters.tension;
+  const double w = level.tension();
   const Index e = level.topology.corner_edge(c), f = level.topology.corner_edge(g);
   mask.add_edge_point(e, s * (0.5 + w));
   mask.add_edge_point(f, s * (0.5 + w));
@@ -278,7 +278,7 @@ void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { ma
 bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::span<const Vec3> p,
                     std::span<const Vec3> child, Vec3& out) {
   const MeshTopology& t = level.topology;
-  const double w = level.parameters.tension;
+  const double w = level.tension();
   if (i >= map.vertex_points) {
     out = p[static_cast<std::size_t>(i - map.vertex_points)];
     return true;
@@ -312,33 +312,31 @@ bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::s
 // Kobbelt's virtual points weigh c = 2w / (1 + 2w) (kobbelt_diagonal_weight):
 // the family needs 1 + 2w > 0.
 void check_tension(std::string_view name, const SchemeParameters& parameters) {
-  if (!(parameters.tension > -0.5))
+  const double w = std::get<TensionParameters>(parameters).tension;
+  if (!(w > -0.5))
     throw ParameterError(fmt::format("{}: the tension w = {} is out of range: kobbelt needs w > -1/2 (its virtual "
                                      "points weigh 2w / (1 + 2w))",
-                                     name, parameters.tension));
+                                     name, w));
 }
 
 }  // namespace
 
 const Scheme& kobbelt_scheme() {
-  static const Scheme scheme = [] {
-    Scheme s{"kobbelt",
-             "interpolating, quad split (arity 2), quad meshes; the tensor-product four-point scheme on regular "
-             "grids, Kobbelt's virtual points at extraordinary vertices",
-             "L. Kobbelt: Interpolatory subdivision on open quadrilateral nets with arbitrary topology, "
-             "Eurographics 1996",
-             SplitRule::quad,
-             false,
-             face_point,
-             edge_point,
-             vertex_point};
-    s.takes_tension = true;
-    s.needs_quads = true;
-    s.face_points_read_edge_points = true;
-    s.evaluate_point = evaluate_point;
-    s.parameter_check = check_tension;
-    return s;
-  }();
+  static const Scheme scheme{
+      .name = "kobbelt",
+      .summary = "interpolating, quad split (arity 2), quad meshes; the tensor-product four-point scheme on regular "
+                 "grids, Kobbelt's virtual points at extraordinary vertices",
+      .citation = "L. Kobbelt: Interpolatory subdivision on open quadrilateral nets with arbitrary topology, "
+                  "Eurographics 1996",
+      .split = SplitRule::quad,
+      .traits = {.interpolating = true, .needs_quads = true},
+      .masks = {.face_point = face_point,
+                .edge_point = edge_point,
+                .vertex_point = vertex_point,
+                .face_points_read_edge_points = true},
+      .fast_path = {.point = evaluate_point},
+      .parameters = TensionParameters{},
+      .parameter_check = check_tension};
   return scheme;
 }
 

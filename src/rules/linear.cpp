@@ -14,9 +14,12 @@ void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { ma
 }  // namespace
 
 const Scheme& linear_scheme() {
-  static const Scheme scheme{"linear", "interpolating baseline, triangle split: edge midpoints",
-                             "linear (midpoint) refinement of triangle meshes", SplitRule::triangle, true, nullptr,
-                             edge_point, vertex_point};
+  static const Scheme scheme{.name = "linear",
+                             .summary = "interpolating baseline, triangle split: edge midpoints",
+                             .citation = "linear (midpoint) refinement of triangle meshes",
+                             .split = SplitRule::triangle,
+                             .traits = {.interpolating = true, .needs_triangles = true},
+                             .masks = {.edge_point = edge_point, .vertex_point = vertex_point}};
   return scheme;
 }
 

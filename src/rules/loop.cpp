@@ -162,21 +162,25 @@ bool limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
 
 const Scheme& loop_scheme() {
   static const Scheme scheme{
-      "loop",
-      "approximating, triangle split, triangle meshes; C2 quartic box spline on regular meshes; Loop's beta",
-      "C. Loop: Smooth subdivision surfaces based on triangles, MS thesis, University of Utah, 1987",
-      SplitRule::triangle, true, nullptr, edge_point, vertex_point<loop_beta>,
-      limit_masks<loop_beta>};
+      .name = "loop",
+      .summary = "approximating, triangle split, triangle meshes; C2 quartic box spline on regular meshes; Loop's beta",
+      .citation = "C. Loop: Smooth subdivision surfaces based on triangles, MS thesis, University of Utah, 1987",
+      .split = SplitRule::triangle,
+      .traits = {.needs_triangles = true, .paper_depth_bound = PaperDepthBound::loop_theorem_3},
+      .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_beta>},
+      .limit_masks = limit_masks<loop_beta>};
   return scheme;
 }
 
 const Scheme& loop_warren_scheme() {
   static const Scheme scheme{
-      "loop-warren",
-      "Loop with Warren's beta = 3/(8k) (3/16 at k = 3)",
-      "J. Warren: Subdivision methods for geometric design, 1995 (unpublished manuscript), after C. Loop 1987",
-      SplitRule::triangle, true, nullptr, edge_point, vertex_point<loop_warren_beta>,
-      limit_masks<loop_warren_beta>};
+      .name = "loop-warren",
+      .summary = "Loop with Warren's beta = 3/(8k) (3/16 at k = 3)",
+      .citation = "J. Warren: Subdivision methods for geometric design, 1995 (unpublished manuscript), after C. Loop 1987",
+      .split = SplitRule::triangle,
+      .traits = {.needs_triangles = true},
+      .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_warren_beta>},
+      .limit_masks = limit_masks<loop_warren_beta>};
   return scheme;
 }
 

@@ -24,20 +24,15 @@ void edge_point(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) { 
 }  // namespace
 
 const Scheme& midedge_scheme() {
-  static const Scheme scheme = [] {
-    Scheme s{"midedge",
-             "approximating, midedge split (arity sqrt 2), closed polygon meshes; edge midpoints (the simplest rule)",
-             "J. Peters, U. Reif: The simplest subdivision scheme for smoothing polyhedra, ACM Transactions on "
-             "Graphics 16(4), 1997",
-             SplitRule::midedge,
-             false,
-             nullptr,
-             edge_point,
-             nullptr};
-    s.period = 2;  // two steps map a face configuration onto itself
-    s.needs_closed_mesh = true;
-    return s;
-  }();
+  static const Scheme scheme{
+      .name = "midedge",
+      .summary = "approximating, midedge split (arity sqrt 2), closed polygon meshes; edge midpoints (the simplest "
+                 "rule)",
+      .citation = "J. Peters, U. Reif: The simplest subdivision scheme for smoothing polyhedra, ACM Transactions on "
+                  "Graphics 16(4), 1997",
+      .split = SplitRule::midedge,
+      .traits = {.needs_closed_mesh = true, .period = 2},  // two steps map a face configuration onto itself
+      .masks = {.edge_point = edge_point}};
   return scheme;
 }
 

@@ -29,15 +29,13 @@ namespace subdiv {
 const char* to_string(Quasi48Boundary b) { return b == Quasi48Boundary::fixed ? "fixed" : "smoothed"; }
 
 const Scheme& quasi_4_8_scheme() {
-  static const Scheme scheme = [] {
-    Scheme s{"quasi-4-8",
-             "approximating, geometry-sensitive bisection (one binary step per level, two per 4-8 step), "
-             "triangle meshes; two-pass averaging, tags not smoothed",
-             "L. Velho: Quasi 4-8 subdivision, Computer Aided Geometric Design 18(4), 2001", SplitRule::quasi_4_8,
-             true};
-    s.period = 2;  // two binary steps make one 4-8 step
-    return s;
-  }();
+  static const Scheme scheme{
+      .name = "quasi-4-8",
+      .summary = "approximating, geometry-sensitive bisection (one binary step per level, two per 4-8 step), "
+                 "triangle meshes; two-pass averaging, tags not smoothed",
+      .citation = "L. Velho: Quasi 4-8 subdivision, Computer Aided Geometric Design 18(4), 2001",
+      .split = SplitRule::quasi_4_8,
+      .traits = {.needs_triangles = true, .period = 2}};  // two binary steps make one 4-8 step
   return scheme;
 }
 

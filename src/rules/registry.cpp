@@ -41,11 +41,14 @@ std::span<const Scheme* const> all_schemes() {
 }
 
 void check_parameters(const Scheme& scheme) {
-  if (scheme.takes_tension && !std::isfinite(scheme.parameters.tension))
-    throw ParameterError(std::string(scheme.name) + ": the tension w = " + std::to_string(scheme.parameters.tension) +
+  const TensionParameters* tension = tension_parameters(scheme.parameters);
+  if (tension && !std::isfinite(tension->tension))
+    throw ParameterError(std::string(scheme.name) + ": the tension w = " + std::to_string(tension->tension) +
                          " is not finite");
   if (scheme.parameter_check) scheme.parameter_check(scheme.name, scheme.parameters);
 }
+
+const Scheme& default_scheme() { return catmull_clark_scheme(); }
 
 const Scheme* find_scheme(std::string_view name) {
   for (const Scheme* s : all_schemes())

@@ -121,21 +121,15 @@ bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::s
 }  // namespace
 
 const Scheme& sqrt3_scheme() {
-  static const Scheme scheme = [] {
-    Scheme s{"sqrt3",
-             "approximating, sqrt3 split (arity sqrt 3), triangles; C2 on regular meshes, C1 at extraordinary "
-             "vertices; cubic B-spline boundaries",
-             "L. Kobbelt: sqrt(3)-subdivision, SIGGRAPH 2000 (boundaries: its section 5)",
-             SplitRule::sqrt3,
-             true,
-             face_point,
-             nullptr,
-             vertex_point};
-    s.boundary_point = boundary_point;
-    s.evaluate_point = evaluate_point;
-    s.period = 2;  // the split turns the layout by 30 degrees on each step
-    return s;
-  }();
+  static const Scheme scheme{
+      .name = "sqrt3",
+      .summary = "approximating, sqrt3 split (arity sqrt 3), triangles; C2 on regular meshes, C1 at extraordinary "
+                 "vertices; cubic B-spline boundaries",
+      .citation = "L. Kobbelt: sqrt(3)-subdivision, SIGGRAPH 2000 (boundaries: its section 5)",
+      .split = SplitRule::sqrt3,
+      .traits = {.needs_triangles = true, .period = 2},  // the split turns the layout by 30 degrees on each step
+      .masks = {.face_point = face_point, .vertex_point = vertex_point, .boundary_point = boundary_point},
+      .fast_path = {.point = evaluate_point}};
   return scheme;
 }
 

@@ -126,11 +126,14 @@ TEST(Analyze, WarrensWrongValenceThreeWeightIsCaught) {
   const Scheme& loop = loop_scheme();
   auto wrong_vertex = [](const LevelView& level, Index v, VertexRule rule, MaskBuilder& mask) {
     const int k = level.topology.valence(v);
-    if (k != 3 || rule != VertexRule::smooth) return loop_warren_scheme().vertex_point(level, v, rule, mask);
+    if (k != 3 || rule != VertexRule::smooth) return loop_warren_scheme().masks.vertex_point(level, v, rule, mask);
     mask.add(v, 1.0 - 3.0 / 16.0);
     for (const Index e : level.topology.vertex_edges(v)) mask.add(level.topology.other_vertex(e, v), 1.0 / 16.0);
   };
-  const Scheme wrong{"wrong", "", "", SplitRule::triangle, true, nullptr, loop.edge_point, wrong_vertex};
+  const Scheme wrong{.name = "wrong",
+                     .split = SplitRule::triangle,
+                     .traits = {.needs_triangles = true},
+                     .masks = {.edge_point = loop.masks.edge_point, .vertex_point = wrong_vertex}};
   const ConfigurationAnalysis a = analyze(wrong, interior(3));
   EXPECT_NEAR(a.leading[1].real(), 7.0 / 16.0, 1e-10);
   EXPECT_NE(a.verdict, SmoothnessVerdict::c1);

@@ -45,11 +45,11 @@ TEST(GccClosedForms, EigenvaluesMatchExample62) {
     Scheme s = gcc(3, alpha, beta);
     // Non-constant weights too: other values at valences 3, 5 and 7.
     Scheme varied = s;
-    varied.parameters.smoothing[0].valences = {{3, 0.1, 0.6}, {5, 0.5, 0.3}, {7, 0.05, 0.15}};
+    std::get<DegreeParameters>(varied.parameters).smoothing[0].valences = {{3, 0.1, 0.6}, {5, 0.5, 0.3}, {7, 0.05, 0.15}};
     for (const Scheme* scheme : {&s, &varied})
       for (int m = 3; m <= 16; ++m) {
         const Spectrum spectrum = spectrum_at(*scheme, m, 1);  // the core: the 1-ring
-        const SmoothingWeights& w = scheme->parameters.smoothing[0];
+        const SmoothingWeights& w = std::get<DegreeParameters>(scheme->parameters).smoothing[0];
         const std::complex<double> mu0 = gcc_mu0(w, m);
         EXPECT_NEAR(largest_of_frequency(spectrum, 0), std::abs(mu0), 1e-10)
             << "alpha " << alpha << " beta " << beta << " m " << m;
@@ -65,14 +65,14 @@ TEST(GccClosedForms, LambdaHalfPiIsOneHalf) {
   for (const auto& [alpha, beta] : kGrid)
     for (int n : {2, 3, 4, 5}) {
       Scheme s = gcc(n, alpha, beta);
-      s.parameters.smoothing[0].valences = {{8, 0.1, 0.2}, {12, 0.7, 0.2}};
+      std::get<DegreeParameters>(s.parameters).smoothing[0].valences = {{8, 0.1, 0.2}, {12, 0.7, 0.2}};
       for (int f = 1; f <= 3; ++f) {
         const Spectrum spectrum = spectrum_at(s, 4 * f, (n + 1) / 2 + 1);
         EXPECT_NEAR(largest_of_frequency(spectrum, f), 0.5, 1e-10) << "n " << n << " f " << f;
       }
     }
   // The closed form agrees at m = 4 for every t.
-  for (const auto& [alpha, beta] : kGrid) EXPECT_NEAR(gcc_lambda(gcc(3, alpha, beta).parameters.smoothing[0], 4), 0.5, 1e-15);
+  for (const auto& [alpha, beta] : kGrid) EXPECT_NEAR(gcc_lambda(std::get<DegreeParameters>(gcc(3, alpha, beta).parameters).smoothing[0], 4), 0.5, 1e-15);
 }
 
 TEST(GccClosedForms, VerdictsAgreeWithTheorem61) {
@@ -98,7 +98,7 @@ TEST(GccClosedForms, ProvenVerdictsHoldForNonConstantWeights) {
   // there than at valence 4), the numerical analysis finds C1 too.
   for (const auto& [alpha, beta] : kGrid) {
     Scheme s = gcc(3, alpha, beta);
-    s.parameters.smoothing[0].valences = {{3, 0.1, 0.6}, {5, 0.5, 0.3}, {7, 0.05, 0.15}};
+    std::get<DegreeParameters>(s.parameters).smoothing[0].valences = {{3, 0.1, 0.6}, {5, 0.5, 0.3}, {7, 0.05, 0.15}};
     for (int m : {3, 5, 7}) {
       const GccTheorem t = gcc_theorem(s, m);
       EXPECT_FALSE(t.constant);
@@ -115,7 +115,7 @@ TEST(GccClosedForms, Condition52FailsWhereTheNumericsFail) {
   // lambda = 0.5500: (5.2) fails, and mu_0 (frequency 0, simple) is the
   // subdominant eigenvalue, so Reif's condition fails.
   Scheme s = gcc(3, 0.25, 0.5);
-  s.parameters.smoothing[0].valences = {{5, 0.9, 0.05}};
+  std::get<DegreeParameters>(s.parameters).smoothing[0].valences = {{5, 0.9, 0.05}};
   const GccTheorem t = gcc_theorem(s, 5);
   EXPECT_FALSE(t.condition_5_2);
   EXPECT_FALSE(t.proves_c1);
@@ -127,7 +127,7 @@ TEST(GccClosedForms, Condition52FailsWhereTheNumericsFail) {
   EXPECT_FALSE(a.eigenvalue_condition);
   EXPECT_NEAR(std::abs(a.leading[1]), std::abs(t.mu0), 1e-10);
   // The same at valence 3, where (5.1) is the condition: mu_0(3) = 0.592575 > lambda(3) = 0.410097.
-  s.parameters.smoothing[0].valences = {{3, 0.9, 0.05}};
+  std::get<DegreeParameters>(s.parameters).smoothing[0].valences = {{3, 0.9, 0.05}};
   const GccTheorem t3 = gcc_theorem(s, 3);
   EXPECT_FALSE(t3.condition_5_1);
   EXPECT_FALSE(t3.proves_c1);
@@ -145,7 +145,7 @@ TEST(GccClosedForms, RegularSecondDifferenceNorm) {
   // rows the paper lists reach it, so the computed norm equals it.
   for (const auto& [alpha, beta] : kGrid) {
     const Scheme s = gcc(3, alpha, beta);
-    const double bound = gcc_second_difference_bound(s.parameters.smoothing[0]);
+    const double bound = gcc_second_difference_bound(std::get<DegreeParameters>(s.parameters).smoothing[0]);
     EXPECT_NEAR(regular_second_difference_norm(s), bound, 1e-14) << alpha << " " << beta;
     EXPECT_LT(bound, 0.5);
     // Theorem 3.3: higher degrees are no worse than their first B R.

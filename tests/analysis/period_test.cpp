@@ -28,7 +28,7 @@ Configuration boundary(int k) { return {Configuration::Kind::boundary, k, Corner
 
 Scheme with_period(const Scheme& scheme, int period) {
   Scheme copy = scheme;
-  copy.period = period;
+  copy.traits.period = period;
   return copy;
 }
 

@@ -129,7 +129,11 @@ void wide_vertex_point(const LevelView& level, Index v, VertexRule, MaskBuilder&
 
 TEST(SubdivisionMatrix, ReportsANeighbourhoodThatIsNotInvariant) {
   const Scheme& cc = catmull_clark_scheme();
-  const Scheme wide{"wide", "", "", SplitRule::quad, false, cc.face_point, cc.edge_point, wide_vertex_point};
+  const Scheme wide{.name = "wide",
+                    .split = SplitRule::quad,
+                    .masks = {.face_point = cc.masks.face_point,
+                              .edge_point = cc.masks.edge_point,
+                              .vertex_point = wide_vertex_point}};
   const LocalSubdivisionMatrix two = invariant_subdivision_matrix(wide, interior(4), 2);
   EXPECT_FALSE(two.invariant);
   EXPECT_EQ(two.rings, 2);

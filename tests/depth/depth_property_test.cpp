@@ -46,7 +46,7 @@ double largest_extent(const PolygonMesh& mesh) {
 }
 
 PolygonMesh for_scheme(PolygonMesh mesh, const Scheme& scheme) {
-  return scheme.needs_triangles ? triangulate(mesh) : mesh;
+  return scheme.traits.needs_triangles ? triangulate(mesh) : mesh;
 }
 
 // Refines level by level up to the bound's depth for an eps it can reach

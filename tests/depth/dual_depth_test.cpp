@@ -348,7 +348,7 @@ TEST(DepthBound, ButterflySchemesAreRefusedAsInterpolating) {
   for (const char* name : {"butterfly", "modified-butterfly"}) {
     const Scheme& scheme = *find_scheme(name);
     try {
-      (void)depth_bound(scheme.needs_triangles ? triangulate(cube) : cube, scheme);
+      (void)depth_bound(scheme.traits.needs_triangles ? triangulate(cube) : cube, scheme);
       ADD_FAILURE() << name << " was not refused";
     } catch (const InvalidInputError& e) {
       EXPECT_NE(std::string(e.what()).find("interpolating"), std::string::npos) << e.what();

@@ -137,7 +137,7 @@ TEST(ChaikinCreasing, UniformAndChaikinDifferOnlyWhereTheAveragesDo) {
     const Scheme& s = scheme(name);
     PolygonMesh chaikin = creased_grid(2.0, 3.0, CreaseMethod::chaikin);
     chaikin.positions[12].z = 1.0;  // above vertex 7
-    if (s.needs_triangles) {
+    if (s.traits.needs_triangles) {
       PolygonMesh tri = test::triangle_grid(4, 2);
       tri.positions = chaikin.positions;
       tri.tags = chaikin.tags;

@@ -26,7 +26,7 @@ RefineOptions levels(int n, int threads = 0) {
 }
 
 bool takes_triangles(const Scheme& s) {
-  return s.needs_triangles || s.split == SplitRule::triangle || s.split == SplitRule::sqrt3 ||
+  return s.traits.needs_triangles || s.split == SplitRule::triangle || s.split == SplitRule::sqrt3 ||
          s.split == SplitRule::quasi_4_8;
 }
 
@@ -110,7 +110,7 @@ TEST(Hierarchy, OneLevelAtATimeEqualsAllAtOnce) {
         refine_further(last, *scheme, 1, levels(0, threads), KeepLevels::last);
         ASSERT_EQ(last.levels.size(), 1u);
         EXPECT_EQ(last.finest().level, 2) << what;
-        if (!scheme->two_steps) {
+        if (!scheme->fast_path.two_steps) {
           expect_same_mesh(last.finest().mesh, at_once.finest().mesh, what + ", last only");
           expect_same_mesh(refine(mesh, *scheme, levels(2, threads)), at_once.finest().mesh, what + ", refine()");
         }

@@ -83,7 +83,7 @@ std::map<std::string, Measures> measure(const PolygonMesh& control, double edge)
   std::map<std::string, Measures> out;
   for (const char* name : {"catmull-clark", "doo-sabin", "midedge", "loop", "modified-butterfly", "butterfly"}) {
     const Scheme& scheme = *find_scheme(name);
-    const PolygonMesh input = scheme.needs_triangles ? triangulate(control) : control;
+    const PolygonMesh input = scheme.traits.needs_triangles ? triangulate(control) : control;
     const PolygonMesh refined = refine(input, scheme, options);
     out[name] = {volume(refined) / volume(control), max_distance_to(refined, control) / edge};
     std::printf("%-20s volume ratio %.4f   max distance to the control mesh %.4f\n", name, out[name].volume_ratio,

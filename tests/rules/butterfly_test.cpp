@@ -231,7 +231,7 @@ TEST(Butterfly, TensionIsAParameter) {
   const MeshTopology t(grid);
   for (const double w : {0.0, 0.03, 0.1}) {
     Scheme scheme = butterfly_scheme();
-    scheme.parameters.tension = w;
+    std::get<TensionParameters>(scheme.parameters).tension = w;
     const StencilTable table = refine_stencils(grid, scheme).at(0);
     for (Index e = 0; e < t.edge_count(); ++e) {
       const auto [a, b] = t.edge_vertices(e);
@@ -245,8 +245,8 @@ TEST(Butterfly, TensionIsAParameter) {
     EXPECT_LT(regular_error(scheme, [](double x, double y) { return 2 * x - y + 1; }), 1e-12) << w;
     EXPECT_GT(regular_error(scheme, [](double x, double y) { return x * x * x - 2 * x * y * y; }), 1e-4) << w;
   }
-  EXPECT_TRUE(butterfly_scheme().takes_tension);
-  EXPECT_FALSE(modified_butterfly_scheme().takes_tension);
+  EXPECT_TRUE(takes_tension(butterfly_scheme()));
+  EXPECT_FALSE(takes_tension(modified_butterfly_scheme()));
 }
 
 // The four-point rule along a straight boundary reproduces cubics: edge

@@ -48,7 +48,7 @@ std::map<std::pair<int, int>, double> box_spline_mask() {
 
 Scheme open_four_eight() {
   Scheme s = four_eight_scheme();
-  s.needs_closed_mesh = false;
+  s.traits.needs_closed_mesh = false;
   return s;
 }
 
@@ -152,7 +152,7 @@ TEST(FourEight, AnalysisRegularIsTheBoxSplineAndC1Elsewhere) {
 // Four-eight one sqrt2 step at a time, never two at once.
 Scheme single_steps() {
   Scheme s = four_eight_scheme();
-  s.two_steps = nullptr;
+  s.fast_path.two_steps = nullptr;
   return s;
 }
 

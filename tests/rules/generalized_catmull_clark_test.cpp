@@ -98,7 +98,7 @@ TEST(GeneralizedCatmullClark, DefaultIsCatmullClarkOnQuadMeshes) {
   }
   // The same from per-valence values: constant 1/4, 1/2, and Catmull-Clark's at valence 3.
   Scheme listed = gcc(3, 0.25, 0.5);
-  listed.parameters.smoothing[0].valences = {{3, 0.0, 2.0 / 3.0}};
+  std::get<DegreeParameters>(listed.parameters).smoothing[0].valences = {{3, 0.0, 2.0 / 3.0}};
   expect_same_tables(refine_stencil_table(test::cube(), listed, levels(2)),
                      refine_stencil_table(test::cube(), catmull_clark_scheme(), levels(2)), 1e-14);
 }
@@ -257,7 +257,7 @@ TEST(GeneralizedCatmullClark, PerStepWeights) {
   SmoothingWeights b1, b2;
   b1.alpha = 0.1, b1.beta = 0.6;
   b2.alpha = 0.4, b2.beta = 0.35;  // gamma = 0.25: edge and opposite weights differ
-  two.parameters.smoothing = {b1, b2};
+  std::get<DegreeParameters>(two.parameters).smoothing = {b1, b2};
   const PolygonMesh got = refine(test::cube(), two, levels(1));
   Scheme first = gcc(3, 0.1, 0.6);
   const PolygonMesh after_first = refine(test::cube(), first, levels(1));
@@ -274,7 +274,7 @@ TEST(GeneralizedCatmullClark, PerStepWeights) {
     EXPECT_LT(norm(got.positions[static_cast<std::size_t>(v)] - expected), 1e-14) << v;
   }
   // The order matters: B_1 B_2 R is another mesh.
-  two.parameters.smoothing = {b2, b1};
+  std::get<DegreeParameters>(two.parameters).smoothing = {b2, b1};
   const PolygonMesh swapped = refine(test::cube(), two, levels(1));
   double largest = 0.0;
   for (Index v = 0; v < got.vertex_count(); ++v)
@@ -340,10 +340,10 @@ TEST(GeneralizedCatmullClark, BadParametersAreRefused) {
   EXPECT_THROW(refine(cube, gcc(3, 0.6, 0.5), levels(1)), InvalidInputError);   // alpha + beta > 1
   EXPECT_THROW(refine(cube, gcc(3, -0.1, 0.5), levels(1)), InvalidInputError);  // alpha < 0
   Scheme three = gcc(7, 0.25, 0.5);
-  three.parameters.smoothing.push_back(three.parameters.smoothing[0]);  // 2 sets for r = 3
+  std::get<DegreeParameters>(three.parameters).smoothing.push_back(std::get<DegreeParameters>(three.parameters).smoothing[0]);  // 2 sets for r = 3
   EXPECT_THROW(refine(cube, three, levels(1)), InvalidInputError);
   Scheme mismatched = midpoint_scheme();
-  mismatched.parameters.degree = 4;  // without set_degree: the split still says quad
+  std::get<DegreeParameters>(mismatched.parameters).degree = 4;  // without set_degree: the split still says quad
   EXPECT_THROW(refine(cube, mismatched, levels(1)), InvalidInputError);
   PolygonMesh creased = cube;
   creased.tags.creases.push_back({0, 1, 2.0});

@@ -177,7 +177,7 @@ TEST(Kobbelt, ReproducesBicubicsOnRegularGrids) {
 // along either pair of opposite edges, with the same result. A line that
 // ends at the boundary continues as 2 E(e) - E(g).
 void expect_face_points_agree(const Scheme& scheme, const Configuration& configuration, bool crease_along_x = false) {
-  const double w = scheme.parameters.tension;
+  const double w = std::get<TensionParameters>(scheme.parameters).tension;
   const RingMesh ring = ring_mesh(SplitRule::quad, configuration, 4);
   PolygonMesh mesh = ring.mesh;
   if (crease_along_x) {  // a crease through the centre along the layout's x axis
@@ -223,7 +223,7 @@ void expect_face_points_agree(const Scheme& scheme, const Configuration& configu
 TEST(Kobbelt, FacePointsNextToExtraordinaryVerticesAgreeInBothDirections) {
   for (const double w : {kW, 0.1}) {
     Scheme scheme = kobbelt_scheme();
-    scheme.parameters.tension = w;
+    std::get<TensionParameters>(scheme.parameters).tension = w;
     for (const int k : {3, 5, 6, 8}) expect_face_points_agree(scheme, {Configuration::Kind::interior, k});
     for (const int k : {2, 3, 4, 6}) expect_face_points_agree(scheme, {Configuration::Kind::boundary, k});
     for (const int k : {6, 8}) expect_face_points_agree(scheme, {Configuration::Kind::interior, k}, true);

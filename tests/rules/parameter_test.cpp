@@ -12,6 +12,7 @@
 #include "subdiv/refine/hierarchy.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/butterfly.h"
+#include "subdiv/rules/generalized_catmull_clark.h"
 #include "subdiv/rules/kobbelt.h"
 #include "support/tension.h"
 #include "support/test_meshes.h"
@@ -22,7 +23,7 @@ namespace {
 using test::with_tension;
 
 void expect_refused(const Scheme& scheme, const PolygonMesh& mesh) {
-  EXPECT_THROW(refine(mesh, scheme), ParameterError) << scheme.parameters.tension;
+  EXPECT_THROW(refine(mesh, scheme), ParameterError) << scheme.name;
   EXPECT_THROW(refine_stencils(mesh, scheme), ParameterError);
   EXPECT_THROW(refine_stencil_table(mesh, scheme), ParameterError);
   EXPECT_THROW(refine_hierarchy(mesh, scheme), ParameterError);
@@ -52,6 +53,48 @@ TEST(SchemeParameters, ButterflyTensionMustBeFinite) {
   const PolygonMesh mesh = triangulate(test::cube());
   expect_refused(with_tension(butterfly_scheme(), std::numeric_limits<double>::quiet_NaN()), mesh);
   EXPECT_NO_THROW(refine(mesh, with_tension(butterfly_scheme(), -0.2)));  // any finite w is a member
+}
+
+// Generalized Catmull-Clark: the degree, the number of smoothing operators
+// and each operator's weights (Chen and Prautzsch: alpha, beta >= 0,
+// 0 < alpha + beta < 1); midpoint subdivision's weights are fixed.
+TEST(SchemeParameters, GeneralizedCatmullClarkDegreeAndWeights) {
+  const PolygonMesh cube = test::cube();
+  Scheme low = generalized_catmull_clark_scheme();
+  std::get<DegreeParameters>(low.parameters).degree = 1;
+  expect_refused(low, cube);
+  EXPECT_THROW(set_degree(low, 1), ParameterError);
+  Scheme counted = generalized_catmull_clark_scheme();
+  set_degree(counted, 7);  // three operators B_1 .. B_3
+  std::get<DegreeParameters>(counted.parameters).smoothing.resize(2);
+  expect_refused(counted, cube);
+  Scheme weights = generalized_catmull_clark_scheme();
+  std::get<DegreeParameters>(weights.parameters).smoothing = {SmoothingWeights{.alpha = 0.7, .beta = 0.4}};
+  expect_refused(weights, cube);
+  Scheme midpoint = midpoint_scheme();
+  std::get<DegreeParameters>(midpoint.parameters).smoothing = {SmoothingWeights{.alpha = 0.3, .beta = 0.5}};
+  expect_refused(midpoint, cube);
+  // The defaults and other degrees refine.
+  for (const int n : {2, 3, 4, 5}) {
+    Scheme s = midpoint_scheme();
+    set_degree(s, n);
+    EXPECT_NO_THROW(refine(cube, s)) << n;
+  }
+}
+
+// A family's check receives only its own parameters: the schemes without
+// parameters hold none, the tension families a tension.
+TEST(SchemeParameters, EachFamilyHoldsItsOwn) {
+  for (const Scheme* s : all_schemes()) {
+    EXPECT_NO_THROW(check_parameters(*s)) << s->name;
+    EXPECT_EQ(takes_tension(*s), tension_parameters(s->parameters) != nullptr) << s->name;
+    if (s->steps) {
+      EXPECT_NE(degree_parameters(s->parameters), nullptr) << s->name;
+    }
+  }
+  EXPECT_TRUE(takes_tension(butterfly_scheme()));
+  EXPECT_TRUE(takes_tension(kobbelt_scheme()));
+  EXPECT_FALSE(std::holds_alternative<std::monostate>(midpoint_scheme().parameters));
 }
 
 }  // namespace

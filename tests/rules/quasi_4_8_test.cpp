@@ -38,8 +38,8 @@ TEST(QuasiFourEight, Registered) {
   const Scheme* s = find_scheme("quasi-4-8");
   ASSERT_NE(s, nullptr);
   EXPECT_EQ(s->split, SplitRule::quasi_4_8);
-  EXPECT_EQ(s->period, 2);
-  EXPECT_TRUE(s->needs_triangles);
+  EXPECT_EQ(s->traits.period, 2);
+  EXPECT_TRUE(s->traits.needs_triangles);
   EXPECT_DOUBLE_EQ(arity(s->split), std::sqrt(2.0));
 }
 

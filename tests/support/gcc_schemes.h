@@ -20,7 +20,7 @@ inline Scheme gcc(int degree, double alpha, double beta) {
   SmoothingWeights w;
   w.alpha = alpha;
   w.beta = beta;
-  s.parameters.smoothing = {w};
+  std::get<DegreeParameters>(s.parameters).smoothing = {w};
   return s;
 }
 

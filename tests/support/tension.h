@@ -8,7 +8,7 @@ namespace subdiv::test {
 
 inline Scheme with_tension(const Scheme& scheme, double w) {
   Scheme s = scheme;
-  s.parameters.tension = w;
+  std::get<TensionParameters>(s.parameters).tension = w;
   return s;
 }
 

@@ -23,7 +23,7 @@ namespace {
 struct AdaptiveCommandOptions {
   std::string input;
   std::string output;
-  std::string scheme = "loop";
+  std::string scheme = std::string(default_scheme().name);
   double eps = 0.0;
   int max_level = 8;
   bool triangulate = false;

@@ -193,8 +193,6 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
   options.rules.boundary_rules =
       opt.boundary_rules == "piecewise-smooth" ? BoundaryRules::piecewise_smooth : BoundaryRules::standard;
   options.rules.flatness = opt.flatness;
-  // Higher degrees reach further: the core of M_n-bar is floor((n-1)/2) rings.
-  if (scheme->steps) options.max_rings = std::max(options.max_rings, scheme->parameters.degree / 2 + 1);
   std::vector<ConfigurationAnalysis> results;
   for (int k = k_first; k <= k_last; ++k) {
     Configuration c = base;

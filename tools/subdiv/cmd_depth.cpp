@@ -28,7 +28,7 @@ constexpr std::int64_t kMaxVerifyFaces = std::int64_t{1} << 28;
 
 struct DepthCommandOptions {
   std::string input;
-  std::string scheme = "loop";
+  std::string scheme = std::string(default_scheme().name);
   double eps = 0.0;
   bool verify = false;
   bool triangulate = false;

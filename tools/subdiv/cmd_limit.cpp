@@ -26,7 +26,7 @@ namespace {
 struct LimitCommandOptions {
   std::string input;
   std::string output;
-  std::string scheme = "catmull-clark";
+  std::string scheme = std::string(default_scheme().name);
   int isolation_levels = 2;
   int levels = 0;
   std::string masks = "closed-form";
@@ -54,8 +54,7 @@ int run_limit(const LimitCommandOptions& opt) {
   options.refine.allow_non_manifold = opt.allow_non_manifold;
   if (opt.boundary == "edge-only") options.refine.boundary = BoundaryInterpolation::edge_only;
   else if (opt.boundary == "edge-and-corner") options.refine.boundary = BoundaryInterpolation::edge_and_corner;
-  if (opt.crease_method == "uniform") options.refine.crease_method = CreaseMethod::uniform;
-  else if (opt.crease_method == "chaikin") options.refine.crease_method = CreaseMethod::chaikin;
+  if (const auto method = crease_method_named(opt.crease_method)) options.refine.crease_method = *method;
 
   // What the input cannot be refined for is said with its file and line,
   // as refine says it.
@@ -165,7 +164,7 @@ Command add_limit_command(CLI::App& app) {
   cmd->add_option("--boundary", opt->boundary, "Boundary interpolation, overriding the file's tag")
       ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
   cmd->add_option("--crease-method", opt->crease_method, "Semi-sharp crease rule, overriding the file's tag")
-      ->check(CLI::IsMember({"uniform", "chaikin"}));
+      ->check(CLI::IsMember(crease_method_names()));
   cmd->add_flag("--normals", opt->normals, "Also write limit normals (from the tangent masks)");
   cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold, "Treat non-manifold elements as sharp");
   cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");

@@ -30,7 +30,7 @@ namespace {
 struct RefineCommandOptions {
   std::string input;
   std::string output;
-  std::string scheme = "catmull-clark";
+  std::string scheme = std::string(default_scheme().name);
   int levels = 1;
   std::string boundary;
   std::string crease_method;
@@ -191,8 +191,7 @@ int run_refine(const RefineCommandOptions& opt) {
   options.threads = opt.threads;
   if (opt.boundary == "edge-only") options.boundary = BoundaryInterpolation::edge_only;
   else if (opt.boundary == "edge-and-corner") options.boundary = BoundaryInterpolation::edge_and_corner;
-  if (opt.crease_method == "uniform") options.crease_method = CreaseMethod::uniform;
-  else if (opt.crease_method == "chaikin") options.crease_method = CreaseMethod::chaikin;
+  if (const auto method = crease_method_named(opt.crease_method)) options.crease_method = *method;
 
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
@@ -262,7 +261,7 @@ Command add_refine_command(CLI::App& app) {
       ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
   cmd->add_option("--crease-method", opt->crease_method,
                   "Semi-sharp crease rule, overriding the file's creasemethod tag (default: the tag, else uniform)")
-      ->check(CLI::IsMember({"uniform", "chaikin"}));
+      ->check(CLI::IsMember(crease_method_names()));
   cmd->add_option("--threads", opt->threads, "Worker threads (0 = all cores); results do not depend on it")
       ->capture_default_str()
       ->check(CLI::Range(0, 1024));

@@ -13,13 +13,13 @@ namespace {
 const char* yes_no(bool b) { return b ? "yes" : "no"; }
 
 bool closed_forms_apply(const Scheme& scheme) {
-  return scheme.parameters.degree == 3 && scheme.parameters.smoothing.size() == 1;
+  return std::get<DegreeParameters>(scheme.parameters).degree == 3 && std::get<DegreeParameters>(scheme.parameters).smoothing.size() == 1;
 }
 
 }  // namespace
 
 std::string format_gcc_report(const Scheme& scheme, const std::vector<ConfigurationAnalysis>& results) {
-  const int n = scheme.parameters.degree;
+  const int n = std::get<DegreeParameters>(scheme.parameters).degree;
   std::string out = fmt::format("Chen-Prautzsch ({}): Lemma 4.7: rho_B <= {:.6g}, rho_A <= {:.6g}\n",
                                 describe_smoothing(scheme.parameters), gcc_rho_b_bound(n), gcc_rho_a_bound(n));
   if (closed_forms_apply(scheme)) {
@@ -40,7 +40,7 @@ std::string format_gcc_report(const Scheme& scheme, const std::vector<Configurat
   const std::string bound =
       n < 3 ? std::string("; n = 2 has no B (A R)")
             : fmt::format("; Lemma 3.2 (c) bound for B_1 R: max{{(2a+b)/4, 1/2-(2a+b)/4}} = {:.6g}",
-                          gcc_second_difference_bound(scheme.parameters.smoothing.front()));
+                          gcc_second_difference_bound(std::get<DegreeParameters>(scheme.parameters).smoothing.front()));
   out += fmt::format("regular case (Theorem 3.1): |U_dd| = {:.6g} from the stencils{}{}: {}\n", norm,
                      n == 3 ? "" : " (the whole level)", bound,
                      norm < 0.5 ? "C1 on regular meshes (|U_dd| < 1/2)" : "not shown C1 (|U_dd| >= 1/2)");
@@ -48,13 +48,13 @@ std::string format_gcc_report(const Scheme& scheme, const std::vector<Configurat
 }
 
 nlohmann::json gcc_report_json(const Scheme& scheme, const std::vector<ConfigurationAnalysis>& results) {
-  const int n = scheme.parameters.degree;
+  const int n = std::get<DegreeParameters>(scheme.parameters).degree;
   nlohmann::json j;
   j["parameters"] = describe_smoothing(scheme.parameters);
   j["rho_b_bound"] = gcc_rho_b_bound(n);
   j["rho_a_bound"] = gcc_rho_a_bound(n);
   j["regular_second_difference_norm"] = regular_second_difference_norm(scheme);
-  if (n >= 3) j["lemma_3_2_bound"] = gcc_second_difference_bound(scheme.parameters.smoothing.front());
+  if (n >= 3) j["lemma_3_2_bound"] = gcc_second_difference_bound(std::get<DegreeParameters>(scheme.parameters).smoothing.front());
   if (closed_forms_apply(scheme)) {
     nlohmann::json rows = nlohmann::json::array();
     for (const ConfigurationAnalysis& a : results) {

@@ -22,6 +22,24 @@ std::string curve_scheme_names() {
   return names;
 }
 
+namespace {
+
+// The names of the surface schemes with this trait, as "a, b and c".
+template <typename Has>
+std::string names_where(Has has) {
+  std::vector<std::string> names;
+  for (const Scheme* s : all_schemes())
+    if (has(*s)) names.emplace_back(s->name);
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return out;
+}
+
+bool has_degree(const Scheme& s) { return degree_parameters(s.parameters) != nullptr && s.steps != nullptr; }
+
+}  // namespace
+
 const Scheme& scheme_named(const std::string& name) {
   if (const Scheme* scheme = find_scheme(name)) return *scheme;
   throw InvalidInputError("unknown scheme '" + name + "' (known: " + surface_scheme_names() + ")");
@@ -30,11 +48,10 @@ const Scheme& scheme_named(const std::string& name) {
 Scheme with_tension(const Scheme& scheme, std::optional<double> tension) {
   Scheme chosen = scheme;
   if (!tension) return chosen;
-  if (!scheme.takes_tension)
-    throw InvalidInputError("--tension applies to butterfly, kobbelt and the curve scheme four-point, not to " +
-                            std::string(scheme.name));
-  // Kobbelt's virtual points divide by 1 + 2w (rules/kobbelt.cpp).
-  chosen.parameters.tension = *tension;
+  if (!takes_tension(scheme))
+    throw InvalidInputError("--tension applies to " + names_where([](const Scheme& s) { return takes_tension(s); }) +
+                            " and to curve schemes with a tension, not to " + std::string(scheme.name));
+  tension_parameters(chosen.parameters)->tension = *tension;
   try {
     check_parameters(chosen);
   } catch (const ParameterError& e) {
@@ -46,8 +63,13 @@ Scheme with_tension(const Scheme& scheme, std::optional<double> tension) {
 CurveScheme with_tension(const CurveScheme& scheme, std::optional<double> tension) {
   if (!tension) return scheme;
   if (scheme.tension == 0.0)
-    throw InvalidInputError("--tension: the curve scheme " + std::string(scheme.name) +
-                            " has no tension (four-point has)");
+  {
+    std::string with;
+    for (const CurveScheme* s : all_curve_schemes())
+      if (s->tension != 0.0) with += (with.empty() ? "" : ", ") + std::string(s->name);
+    throw InvalidInputError("--tension: the curve scheme " + std::string(scheme.name) + " has no tension (" + with +
+                            " has)");
+  }
   return four_point_scheme(*tension);
 }
 
@@ -97,13 +119,15 @@ Scheme with_degree_options(const Scheme& scheme, const DegreeOptionValues& value
   const bool weights = !values.alpha.empty() || !values.beta.empty() || !values.valence_weights.empty();
   if (!values.degree && !weights) return chosen;
   const char* option = values.degree ? "--degree" : !values.alpha.empty() ? "--alpha" : !values.beta.empty() ? "--beta" : "--valence-weights";
-  if (!scheme.steps)
-    throw InvalidInputError(std::string(option) + " applies to gcc and midpoint, not to " + std::string(scheme.name));
-  if (values.degree) set_degree(chosen, *values.degree);
+  if (!has_degree(scheme))
+    throw InvalidInputError(std::string(option) + " applies to " + names_where(has_degree) + ", not to " +
+                            std::string(scheme.name));
+  try {
+    if (values.degree) set_degree(chosen, *values.degree);
+  } catch (const ParameterError& e) {
+    throw InvalidInputError(fmt::format("--degree {}: {}", *values.degree, e.what()));
+  }
   if (!weights) return chosen;
-  if (scheme.name == "midpoint")
-    throw InvalidInputError(std::string(option) +
-                            ": midpoint has alpha = 1/4, beta = 1/2; give other weights to gcc");
   if (values.alpha.empty() != values.beta.empty())
     throw InvalidInputError("--alpha and --beta go together (" + std::string(values.alpha.empty() ? "--beta" : "--alpha") +
                             " without the other)");
@@ -111,12 +135,12 @@ Scheme with_degree_options(const Scheme& scheme, const DegreeOptionValues& value
     const std::vector<double> alpha = parse_list(values.alpha, "--alpha"), beta = parse_list(values.beta, "--beta");
     if (alpha.size() != beta.size())
       throw InvalidInputError(fmt::format("--alpha gives {} values and --beta {}: give as many", alpha.size(), beta.size()));
-    chosen.parameters.smoothing.clear();
+    std::get<DegreeParameters>(chosen.parameters).smoothing.clear();
     for (std::size_t i = 0; i < alpha.size(); ++i) {
       SmoothingWeights w;
       w.alpha = alpha[i];
       w.beta = beta[i];
-      chosen.parameters.smoothing.push_back(w);
+      std::get<DegreeParameters>(chosen.parameters).smoothing.push_back(w);
     }
   }
   for (const std::string& text : values.valence_weights) {
@@ -125,10 +149,14 @@ Scheme with_degree_options(const Scheme& scheme, const DegreeOptionValues& value
     if (parts.size() != 3) throw InvalidInputError(what + ": expected M:ALPHA:BETA");
     const double m = parse_number(parts[0], what);
     if (m != std::floor(m) || m < 3 || m > 1e6) throw InvalidInputError(what + ": the valence must be an integer >= 3");
-    for (SmoothingWeights& w : chosen.parameters.smoothing)
+    for (SmoothingWeights& w : std::get<DegreeParameters>(chosen.parameters).smoothing)
       w.valences.push_back({static_cast<int>(m), parse_number(parts[1], what), parse_number(parts[2], what)});
   }
-  generalized_catmull_clark_steps(chosen.parameters);  // the counts and ranges, before any work
+  try {
+    check_parameters(chosen);  // the counts and ranges, before any work
+  } catch (const ParameterError& e) {
+    throw InvalidInputError(std::string(option) + ": " + e.what());
+  }
   return chosen;
 }
 

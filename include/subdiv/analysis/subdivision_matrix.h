@@ -63,14 +63,15 @@ std::vector<int> vertex_rings(const MeshTopology& topology, std::span<const Inde
 
 /// The matrix of `scheme` at `configuration` over a neighbourhood of `rings`
 /// face rings, refined under `rules` (boundary rules, flatness; its level
-/// count is ignored: the matrix spans scheme.period levels). Throws
+/// count is ignored: the matrix spans scheme.traits.period levels). Throws
 /// InvalidInputError for schemes or configurations the ring layout does not
 /// cover, and for a period below 1.
 LocalSubdivisionMatrix local_subdivision_matrix(const Scheme& scheme, const Configuration& configuration, int rings,
                                                 const RefineOptions& rules = {});
 
-/// The smallest neighbourhood (1 .. max_rings face rings) that is invariant,
-/// or the largest tried, not invariant, when none is.
+/// The smallest neighbourhood (1 .. max_rings face rings, or the scheme's
+/// traits.analysis_rings where more) that is invariant, or the largest
+/// tried, not invariant, when none is.
 LocalSubdivisionMatrix invariant_subdivision_matrix(const Scheme& scheme, const Configuration& configuration,
                                                     int max_rings = 4, const RefineOptions& rules = {});
 

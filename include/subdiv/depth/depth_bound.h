@@ -23,6 +23,8 @@ struct DepthTerm {
 };
 
 struct DepthBound {
+  /// The bounded scheme's name: set by depth_bound(); empty in the published
+  /// bounds below, which are formulas in the papers' measures.
   std::string scheme;
   /// "paper" for the published bounds, "analysis" for bounds derived from
   /// the scheme's eigenvalues (docs/design.md says which is which).

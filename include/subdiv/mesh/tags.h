@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "subdiv/core/types.h"
@@ -90,6 +91,10 @@ struct Tags {
 const char* to_string(BoundaryInterpolation);
 const char* to_string(FaceVaryingInterpolation);
 const char* to_string(CreaseMethod);
+/// The crease method with this name (to_string's), or nullopt.
+std::optional<CreaseMethod> crease_method_named(std::string_view name);
+/// Every crease method's name, in declaration order.
+std::vector<std::string> crease_method_names();
 const char* to_string(TriangleSubdivision);
 const char* to_string(CornerType);
 

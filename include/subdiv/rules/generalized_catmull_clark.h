@@ -18,20 +18,22 @@ namespace subdiv {
 
 /// "gcc": M_3-bar with Catmull-Clark's parameters alpha(m) = 1 - 3/m,
 /// beta(m) = 2/m (Catmull-Clark itself on quad meshes); set other degrees
-/// with set_degree and other weights in parameters.smoothing.
+/// with set_degree and other weights in its DegreeParameters' smoothing;
+/// its parameter check validates them (ParameterError).
 const Scheme& generalized_catmull_clark_scheme();
 /// "midpoint": the midpoint scheme M_3 (alpha = 1/4, beta = 1/2 at every
-/// valence, so B = A^2); other degrees with set_degree.
+/// valence, so B = A^2); other degrees with set_degree. Other weights are
+/// refused (ParameterError).
 const Scheme& midpoint_scheme();
 
 /// Sets the degree n of a generalized Catmull-Clark scheme, and with it the
-/// split (quad for odd n, dual for even n). Throws InvalidInputError for
-/// n < 2 or a scheme without steps.
+/// split (quad for odd n, dual for even n). Throws ParameterError for
+/// n < 2 or a scheme without a degree.
 void set_degree(Scheme& scheme, int degree);
 
 /// The operators of one level of a generalized Catmull-Clark scheme with
 /// these parameters: R, B_1 .. B_r, and A for even degrees. Throws
-/// InvalidInputError for a degree below 2, a smoothing list of another
+/// ParameterError for parameters without a degree, a degree below 2, a smoothing list of another
 /// length than 1 or r, or weights outside the paper's range (alpha, beta
 /// >= 0, 0 < alpha + beta < 1).
 std::vector<Scheme> generalized_catmull_clark_steps(const SchemeParameters& parameters);

@@ -10,6 +10,7 @@
 #include <span>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "subdiv/mesh/polygon_mesh.h"
@@ -59,20 +60,35 @@ struct SmoothingWeights {
   std::pair<double, double> at(int m) const;
 };
 
-/// The parameters of a parameterised family of schemes. A registered scheme
-/// carries its defaults; set them on a copy (Scheme is a plain value) to
-/// refine or analyse another member. Masks read them from the LevelView.
-struct SchemeParameters {
-  /// Butterfly's tension w (Dyn, Levin and Gregory 1990): 1/16 reproduces
-  /// cubic polynomials on regular meshes.
+/// The tension families (Butterfly, Kobbelt): the tension w. Butterfly's
+/// 1/16 (Dyn, Levin and Gregory 1990) reproduces cubic polynomials on
+/// regular meshes.
+struct TensionParameters {
   double tension = 1.0 / 16.0;
-  /// Generalized Catmull-Clark schemes (rules/generalized_catmull_clark.h):
-  /// the degree n >= 2 and the smoothing operators B_1 .. B_r, r = (n - 1) / 2
-  /// rounded down: one entry for all of them, or r entries (none for n = 2).
-  /// Change the degree with set_degree(), which also sets the split.
+};
+
+/// Generalized Catmull-Clark schemes (rules/generalized_catmull_clark.h):
+/// the degree n >= 2 and the smoothing operators B_1 .. B_r, r = (n - 1) / 2
+/// rounded down: one entry for all of them, or r entries (none for n = 2).
+/// Change the degree with set_degree(), which also sets the split.
+struct DegreeParameters {
   int degree = 3;
   std::vector<SmoothingWeights> smoothing = {};
 };
+
+/// A family's parameters: none, a tension, or a degree with its smoothing
+/// operators. A registered scheme carries its defaults; set them on a copy
+/// (Scheme is a plain value) to refine or analyse another member; the rule
+/// file's check (Scheme::parameter_check) validates them. Masks read them
+/// from the LevelView.
+using SchemeParameters = std::variant<std::monostate, TensionParameters, DegreeParameters>;
+
+/// The tension of a tension family, or nullptr (const and mutable).
+inline const TensionParameters* tension_parameters(const SchemeParameters& p) { return std::get_if<TensionParameters>(&p); }
+inline TensionParameters* tension_parameters(SchemeParameters& p) { return std::get_if<TensionParameters>(&p); }
+/// The degree and smoothing of a generalized Catmull-Clark scheme, or nullptr.
+inline const DegreeParameters* degree_parameters(const SchemeParameters& p) { return std::get_if<DegreeParameters>(&p); }
+inline DegreeParameters* degree_parameters(SchemeParameters& p) { return std::get_if<DegreeParameters>(&p); }
 
 /// What a mask may look at: the parent level's topology (not its positions)
 /// and the sharpness of its edges.
@@ -99,6 +115,8 @@ struct LevelView {
   std::span<const double> sector_angle = {};
   std::span<const double> child_end_sharpness = {};  ///< empty: is_sharp_at == is_sharp
   SchemeParameters parameters = {};  ///< the refined scheme's
+  /// The tension of a tension family's masks (its parameters hold one).
+  double tension() const { return std::get<TensionParameters>(parameters).tension; }
   /// The parent's level, 0 for the control mesh: rules that alternate
   /// between steps (sqrt3's boundary) read its parity.
   int level = 0;
@@ -218,62 +236,106 @@ struct Scheme;
 /// ordinary one-split scheme with its own parameters (refine.cpp).
 using StepList = std::vector<Scheme> (*)(const SchemeParameters& parameters);
 
-struct Scheme {
-  std::string_view name;      ///< as users type it: "catmull-clark", "loop-warren"
-  std::string_view summary;   ///< one line
-  std::string_view citation;  ///< the paper the rules come from
-  SplitRule split;
+/// Which published a-priori depth bound covers a scheme's regular part
+/// (depth/depth_bound.h); every other scheme's bound comes from the analysis.
+enum class PaperDepthBound : std::uint8_t {
+  none,
+  loop_theorem_3,       ///< Loop's rules with Loop's beta
+  cheng_catmull_clark,  ///< Catmull-Clark
+  doo_sabin_theorem_5,  ///< Doo-Sabin's rules with Doo's boundary
+};
+
+/// What a scheme takes and how its levels repeat: what the engine, the
+/// analysis, depth, limit and the CLI ask instead of its name.
+struct SchemeTraits {
+  /// Control vertices stay on every level (and so on the limit surface).
+  bool interpolating = false;
+  /// Refuses control meshes with faces other than triangles.
   bool needs_triangles = false;
-  FaceMask face_point = nullptr;  ///< quad and sqrt3 splits
-  EdgeMask edge_point = nullptr;  ///< primal splits
-  VertexMask vertex_point = nullptr;  ///< primal splits
-  /// Closed-form limit masks for the scheme's standard rules, or nullptr:
-  /// limit positions then use the masks the analysis reads off the rules.
-  LimitMaskFunction limit_masks = nullptr;
-  CornerMask corner_point = nullptr;  ///< dual split only
-  BoundaryPointMask boundary_point = nullptr;  ///< dual split, sqrt3 split
-  SchemeParameters parameters = {};
-  /// Whether the masks read parameters.tension (the CLI's --tension).
-  bool takes_tension = false;
+  /// Refuses control meshes with faces other than quads (a scheme whose
+  /// rules read quads; its split keeps every face a quad).
+  bool needs_quads = false;
+  /// Refuses meshes with a boundary (a scheme without boundary rules whose
+  /// boundary would degenerate). The analysis lifts it: its ring mesh's outer
+  /// boundary lies outside the neighbourhood it reads.
+  bool needs_closed_mesh = false;
   /// Refinement steps per analysis step: the number of steps after which a
   /// configuration repeats (1 for the primal and dual splits; 2 for schemes
   /// such as sqrt3 and 4-8 whose layout turns on every step). The analysis
   /// reads the matrix of `period` composed steps.
   int period = 1;
-  /// Refuses meshes with a boundary (a scheme without boundary rules whose
-  /// boundary would degenerate). The analysis lifts it: its ring mesh's outer
-  /// boundary lies outside the neighbourhood it reads.
-  bool needs_closed_mesh = false;
-  /// Refuses control meshes with faces other than quads (a scheme whose
-  /// rules read quads; its split keeps every face a quad).
-  bool needs_quads = false;
+  /// Face rings around a vertex that the analysis tries at least before
+  /// calling a neighbourhood not invariant (composite schemes of high degree
+  /// read further than the analysis' default); 0: the default.
+  int analysis_rings = 0;
+  /// The published depth bound that applies, if any.
+  PaperDepthBound paper_depth_bound = PaperDepthBound::none;
+};
+
+/// The masks that make one level's child vertices (which ones a split
+/// needs: topology/split.h).
+struct SchemeMasks {
+  FaceMask face_point = nullptr;      ///< quad and sqrt3 splits
+  EdgeMask edge_point = nullptr;      ///< primal splits
+  VertexMask vertex_point = nullptr;  ///< primal splits
+  CornerMask corner_point = nullptr;  ///< dual split only
+  BoundaryPointMask boundary_point = nullptr;  ///< dual split, sqrt3 split
   /// Quad split: the face mask weights the level's new edge points
   /// (MaskBuilder::add_edge_point), so the engine makes edge and vertex
   /// points first and face points last; the edge and vertex masks must then
   /// not weight face points.
   bool face_points_read_edge_points = false;
-  /// Composite schemes (generalized Catmull-Clark, midpoint): one level is
-  /// these steps in turn, R (a quad split), smoothing steps (identity
-  /// splits) and possibly A, a dual split of the level's parent whose masks
-  /// weight the quad split's vertices; `split` is then the level's overall
-  /// split (quad, or dual when the steps end with A). nullptr otherwise.
-  StepList steps = nullptr;
+};
+
+/// Shortcuts of the fast path (refine()), each held to the masks by tests.
+struct FastPath {
+  /// The level's positions (PositionEvaluator); nullptr: the masks. Vertex
+  /// channels always take the masks.
+  PositionEvaluator positions = nullptr;
+  /// A shortcut per child vertex (PointEvaluator); nullptr: the masks.
+  /// Unused where vertex channels need the masks anyway.
+  PointEvaluator point = nullptr;
   /// A quad-split scheme one level of which is two steps of this one (4-8:
   /// two sqrt2 steps make the quad split). The engine refines with it where
   /// two steps remain and the level is closed, manifold and carries no
   /// face-varying channel; its child numbers the vertices [face points |
   /// edge points | vertex points] as every quad split does. nullptr: none.
   const Scheme* two_steps = nullptr;
-  /// The fast path's positions (PositionEvaluator); nullptr: the masks.
-  /// Vertex channels always take the masks.
-  PositionEvaluator evaluate_positions = nullptr;
-  /// The fast path's shortcut per child vertex (PointEvaluator); nullptr:
-  /// the masks. Unused where vertex channels need the masks anyway.
-  PointEvaluator evaluate_point = nullptr;
-  /// The family's own parameter check (ParameterCheck); nullptr: only the
-  /// generic one (check_parameters()).
+};
+
+/// A subdivision scheme, declared by its rule file with designated
+/// initializers:
+///
+///     static const Scheme scheme{
+///         .name = "loop", .summary = "...", .citation = "...",
+///         .split = SplitRule::triangle,
+///         .traits = {.needs_triangles = true},
+///         .masks = {.edge_point = edge_point, .vertex_point = vertex_point},
+///         .limit_masks = limit_masks};
+struct Scheme {
+  std::string_view name = {};      ///< as users type it
+  std::string_view summary = {};   ///< one line
+  std::string_view citation = {};  ///< the paper the rules come from
+  SplitRule split = SplitRule::quad;
+  SchemeTraits traits = {};
+  SchemeMasks masks = {};
+  /// Composite schemes (generalized Catmull-Clark, midpoint): one level is
+  /// these steps in turn, R (a quad split), smoothing steps (identity
+  /// splits) and possibly A, a dual split of the level's parent whose masks
+  /// weight the quad split's vertices; `split` is then the level's overall
+  /// split (quad, or dual when the steps end with A). nullptr otherwise.
+  StepList steps = nullptr;
+  /// Closed-form limit masks for the scheme's standard rules, or nullptr:
+  /// limit positions then use the masks the analysis reads off the rules.
+  LimitMaskFunction limit_masks = nullptr;
+  FastPath fast_path = {};
+  SchemeParameters parameters = {};
+  /// The family's own parameter check (ParameterCheck); nullptr: none.
   ParameterCheck parameter_check = nullptr;
 };
+
+/// Whether the scheme's masks read a tension (the CLI's --tension).
+inline bool takes_tension(const Scheme& scheme) { return tension_parameters(scheme.parameters) != nullptr; }
 
 /// Throws ParameterError unless the scheme's parameters are valid: a finite
 /// tension where the masks read it, and the family's own check. Every
@@ -282,6 +344,9 @@ void check_parameters(const Scheme& scheme);
 
 /// Every scheme, in the order `subdiv schemes` lists them.
 std::span<const Scheme* const> all_schemes();
+/// The scheme every command uses when none is named: Catmull-Clark, which
+/// takes any polygon mesh.
+const Scheme& default_scheme();
 /// The scheme with this name, or nullptr.
 const Scheme* find_scheme(std::string_view name);
 
