@@ -566,6 +566,20 @@ run analyze-q48 0 analyze -s quasi-4-8 -k 3..6 &&
 run analyze-q48-json 1 analyze -s quasi-4-8 --json && stderr_one_line analyze-q48-json
 run analyze-warmup-loop 1 analyze -s loop --warmup 2 && stderr_one_line analyze-warmup-loop
 
+# sqrt3 on an open mesh: an odd level warns, and --start-level continues it
+# exactly as refining both levels at once.
+run sqrt3-level1 0 refine "$meshes/l_shape.obj" -s sqrt3 --triangulate -l 1 -o "$work/s1.obj" &&
+  stderr_one_line sqrt3-level1 && stderr_has sqrt3-level1 "s1.obj is at level 1 of sqrt3" &&
+  stderr_has sqrt3-level1 "--start-level 1"
+run sqrt3-continue 0 refine "$work/s1.obj" -s sqrt3 -l 1 --start-level 1 -o "$work/s2.obj" && [ ! -s "$work/err" ] && pass ||
+  fail "sqrt3-continue: warned at an even level"
+run sqrt3-at-once 0 refine "$meshes/l_shape.obj" -s sqrt3 --triangulate -l 2 -o "$work/s2b.obj"
+cmp -s <(grep '^v ' "$work/s2.obj") <(grep '^v ' "$work/s2b.obj") && pass || fail "sqrt3: 1 + 1 levels with --start-level differ from 2"
+run sqrt3-closed 0 refine "$meshes/tetrahedron.obj" -s sqrt3 -l 1 -o "$work/s3.obj" && [ ! -s "$work/err" ] && pass ||
+  fail "sqrt3-closed: warned on a closed mesh"
+run start-level-quad 1 refine "$meshes/cube.obj" -l 1 --start-level 1 -o "$work/x.obj" &&
+  stderr_one_line start-level-quad && stderr_has start-level-quad "--start-level applies to the sqrt3 split"
+
 # Hierarchical edits: convert keeps them; refine, limit and adaptive drop
 # them from the refined mesh and say how many of each kind.
 edits=$data/hierarchical_edits.obj

@@ -44,6 +44,7 @@ struct RefineCommandOptions {
   RuleOptionValues rules;
   DegreeOptionValues degree;
   bool full_steps = false;            // quasi-4-8: -l counts 4-8 steps (two binary steps each)
+  int start_level = 0;                // the level the input is at (splits whose steps alternate)
   std::string quasi_boundary;         // quasi-4-8: fixed or smoothed
   std::vector<std::string> creases;  // --crease A,B: infinitely sharp edge tags
 };
@@ -82,6 +83,7 @@ const char* surface_option_given(const RefineCommandOptions& opt) {
   if (!opt.degree.valence_weights.empty()) return "--valence-weights";
   if (!opt.creases.empty()) return "--crease";
   if (opt.full_steps) return "--full-steps";
+  if (opt.start_level != 0) return "--start-level";
   if (!opt.quasi_boundary.empty()) return "--quasi-boundary";
   return nullptr;
 }
@@ -153,6 +155,23 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
   return kExitOk;
 }
 
+// A split whose steps alternate leaves an open mesh at an odd level in a
+// state the file does not record: refining the file again from level 0
+// would not continue the same surface.
+void warn_if_level_matters(const Scheme& scheme, const PolygonMesh& input, const RefineOptions& options,
+                           const std::string& output) {
+  const int level = options.start_level + options.levels;
+  if (!steps_alternate(scheme.split) || level % 2 == 0 || options.levels == 0) return;
+  const MeshTopology topology(input);
+  bool open = false;
+  for (Index e = 0; e < topology.edge_count() && !open; ++e) open = topology.is_boundary_edge(e);
+  if (!open) return;
+  std::fprintf(stderr,
+               "subdiv: warning: %s is at level %d of %s, whose boundary rule alternates with the level: refine it "
+               "further with --start-level %d to continue the same surface\n",
+               output.c_str(), level, std::string(scheme.name).c_str(), level);
+}
+
 int run_refine(const RefineCommandOptions& opt) {
   const Scheme* registered = find_scheme(opt.scheme);
   if (!registered) {
@@ -185,6 +204,11 @@ int run_refine(const RefineCommandOptions& opt) {
   for (const std::string& text : opt.creases)
     file.mesh.tags.creases.push_back(parse_crease(text, file.mesh.vertex_count()));
   options.levels = opt.full_steps ? 2 * opt.levels : opt.levels;
+  if (opt.start_level != 0 && !steps_alternate(scheme->split))
+    throw InvalidInputError(fmt::format("--start-level applies to the {}, whose steps alternate with the level, not "
+                                        "to the {} of {}",
+                                        to_string(SplitRule::sqrt3), to_string(scheme->split), opt.scheme));
+  options.start_level = opt.start_level;
   if (options.levels > 0) warn_dropped_tags(opt.input, file.mesh.tags);
   if (opt.quasi_boundary == "smoothed") options.quasi_4_8_boundary = Quasi48Boundary::smoothed;
   options.allow_non_manifold = opt.allow_non_manifold;
@@ -214,6 +238,7 @@ int run_refine(const RefineCommandOptions& opt) {
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
   const auto write_start = clock::now();
   print_warnings(opt.output, write_mesh(result, opt.output, wopt));
+  warn_if_level_matters(*scheme, file.mesh, options, opt.output);
   if (opt.stats) {
     std::printf("scheme %s, %d levels, threads %s\n", std::string(scheme->name).c_str(), options.levels,
                 opt.threads > 0 ? std::to_string(opt.threads).c_str() : "all");
@@ -273,6 +298,10 @@ Command add_refine_command(CLI::App& app) {
   cmd->add_option("--crease", opt->creases,
                   "Tag edge A,B (0-based vertices) as infinitely sharp (repeatable); quasi-4-8 does not smooth it")
       ->type_name("A,B");
+  cmd->add_option("--start-level", opt->start_level,
+                  "The level the input is at (default 0, a control mesh); the sqrt3 split's boundary rule "
+                  "alternates with the level, so a mesh refined to an odd level continues with this")
+      ->check(CLI::Range(0, 64));
   cmd->add_flag("--full-steps", opt->full_steps,
                 "quasi-4-8: -l counts 4-8 steps, two binary steps each (default: binary steps)");
   cmd->add_option("--quasi-boundary", opt->quasi_boundary,

@@ -46,6 +46,11 @@ enum class SplitRule { quad, triangle, dual, midedge, identity, quasi_4_8, sqrt3
 /// depth and adaptive refinement are written for them.
 constexpr bool is_primal(SplitRule r) { return r == SplitRule::quad || r == SplitRule::triangle; }
 
+/// Whether a split's steps differ with the level they start from (the sqrt3
+/// split's boundary treatment alternates), so that a refined mesh's level
+/// is part of its state.
+constexpr bool steps_alternate(SplitRule r) { return r == SplitRule::sqrt3; }
+
 /// Whether the sqrt3 split's step from level `level` (0 = the control mesh)
 /// trisects the boundary edges: every second step, the first one does not.
 bool sqrt3_step_trisects(int level);
