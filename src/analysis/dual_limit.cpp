@@ -3,6 +3,7 @@
 
 #include "subdiv/analysis/dual_limit.h"
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -142,6 +143,7 @@ LimitResult dual_limit_positions(const PolygonMesh& mesh, const Scheme& scheme, 
   const MeshTopology parent(mesh);
   const MeshTopology t(child);
   DualMaskCache cache(scheme, options.refine);
+  const std::array<double, 3> boundary = boundary_vertex_limit(scheme);  // (a, v, b) along the boundary
 
   LimitResult result;
   result.levels_refined = 1;
@@ -164,7 +166,7 @@ LimitResult dual_limit_positions(const PolygonMesh& mesh, const Scheme& scheme, 
       const auto edges = parent.vertex_edges(v);
       const Vec3 a = mesh.positions[static_cast<std::size_t>(parent.other_vertex(edges.front(), v))];
       const Vec3 b = mesh.positions[static_cast<std::size_t>(parent.other_vertex(edges.back(), v))];
-      result.positions[vi] = 0.125 * (a + b) + 0.75 * mesh.positions[vi];
+      result.positions[vi] = boundary[0] * a + boundary[1] * mesh.positions[vi] + boundary[2] * b;
       result.sources[vi] = LimitSource::closed_form;
       continue;
     }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <cstdint>
 #include <string>
 
@@ -171,6 +172,24 @@ StencilTable curve_stencils(const CurveScheme& scheme, Index point_count, bool c
   StencilTable total = level_table(scheme, point_count, closed);
   for (int l = 1; l < levels; ++l) total = total.then(level_table(scheme, total.row_count(), closed));
   return total;
+}
+
+CurveMask limit_at_point(const CurveScheme& scheme) {
+  if (!scheme.dual || scheme.limit.empty()) return scheme.limit;
+  // Child 2j + e is mask e anchored at parent j; the child edge around
+  // point i's parameter runs from child 2i - 1 (odd, anchored at i - 1) to
+  // child 2i (even, anchored at i), and `limit` is anchored at its start.
+  std::map<int, double> weights;  // by offset from i
+  for (const CurveMaskEntry& l : scheme.limit) {
+    const int child = -1 + l.offset;  // relative to child 2i
+    const int anchor = child >= 0 ? child / 2 : (child - 1) / 2;
+    const CurveMask& mask = child - 2 * anchor == 0 ? scheme.even : scheme.odd;
+    for (const CurveMaskEntry& m : mask) weights[anchor + m.offset] += l.weight * m.weight;
+  }
+  CurveMask out;
+  for (const auto& [offset, weight] : weights)
+    if (weight != 0.0) out.push_back({offset, weight});
+  return out;
 }
 
 std::span<const CurveScheme* const> all_curve_schemes() {

@@ -201,7 +201,8 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
     bool ready = true;
     for (const Index f : extraordinary) {
       if (on_boundary(f)) {
-        std::optional<DualFaceOperator> op = local_face_operator(t, *step, *child_topology, f);
+        std::optional<DualFaceOperator> op =
+            local_face_operator(t, *step, *child_topology, f, boundary_vertex_limit(scheme));
         if (!op) {
           ready = false;
           break;

@@ -6,6 +6,7 @@
 #include "subdiv/depth/dual_face_bound.h"
 
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -45,8 +46,8 @@ Eigen::RowVectorXd limit_functional(const Eigen::MatrixXd& S, int k) {
 // the mesh lines (opposite edges of a 4-valent interior vertex, the two
 // boundary edges of a 3-valent boundary vertex) inside the neighbourhood.
 template <typename Column>
-void add_functionals(const MeshTopology& t, Index f, const StencilTable& step, Column column, Eigen::Index n,
-                     DualFaceOperator& op) {
+void add_functionals(const MeshTopology& t, Index f, const StencilTable& step, const std::array<double, 3>& boundary,
+                     Column column, Eigen::Index n, DualFaceOperator& op) {
   const auto sparse = [&](const Eigen::RowVectorXd& row) {
     DualFaceOperator::SparseRow out;
     for (Eigen::Index j = 0; j < n; ++j)
@@ -58,9 +59,9 @@ void add_functionals(const MeshTopology& t, Index f, const StencilTable& step, C
     row[column(v)] -= 1.0;
     if (t.vertex_kind(v) == VertexKind::boundary) {
       const auto edges = t.vertex_edges(v);
-      row[column(t.other_vertex(edges.front(), v))] += 0.125;
-      row[column(t.other_vertex(edges.back(), v))] += 0.125;
-      row[column(v)] += 0.75;
+      row[column(t.other_vertex(edges.front(), v))] += boundary[0];
+      row[column(v)] += boundary[1];
+      row[column(t.other_vertex(edges.back(), v))] += boundary[2];
     } else {
       const auto corners = t.vertex_corners(v);
       for (const Index c : corners) {
@@ -227,7 +228,8 @@ DualFaceOperator dual_face_operator(const Scheme& scheme, int k, const RefineOpt
   RefineOptions once = rules;
   once.levels = 1;
   once.on_level = nullptr;
-  add_functionals(t, ring.centre_face, refine_stencil_table(ring.mesh, open, once), col, n, op);
+  add_functionals(t, ring.centre_face, refine_stencil_table(ring.mesh, open, once), boundary_vertex_limit(scheme), col,
+                  n, op);
   op.pattern = neighbourhood_pattern(t, ring.centre_face, col);
   return op;
 }
@@ -245,7 +247,8 @@ std::optional<Eigen::MatrixXd> canonical_neighbourhood(const DualFaceOperator& o
 }
 
 std::optional<DualFaceOperator> local_face_operator(const MeshTopology& parent, const StencilTable& step,
-                                                    const MeshTopology& child, Index f) {
+                                                    const MeshTopology& child, Index f,
+                                                    const std::array<double, 3>& boundary_limit) {
   const std::vector<int> rings = vertex_rings(parent, parent.face_vertices(f), kDualBoundRings);
   std::vector<Eigen::Index> column(static_cast<std::size_t>(parent.vertex_count()), -1);
   Eigen::Index n = 0;
@@ -277,7 +280,7 @@ std::optional<DualFaceOperator> local_face_operator(const MeshTopology& parent, 
   if (moduli.size() < 2 || std::abs(moduli[0] - 1.0) > 1e-9 || !(moduli[1] < 1.0 - 1e-9)) return std::nullopt;
   op.rate = moduli[1];
   op.limit = limit_functional(op.S, op.k);
-  add_functionals(parent, f, step, col, n, op);
+  add_functionals(parent, f, step, boundary_limit, col, n, op);
   return op;
 }
 

@@ -148,7 +148,8 @@ const Scheme& catmull_clark_scheme() {
       .citation = "E. Catmull, J. Clark: Recursively generated B-spline surfaces on arbitrary topological meshes, CAD 10(6), 1978",
       .split = SplitRule::quad,
       .traits = {.paper_depth_bound = PaperDepthBound::cheng_catmull_clark},
-      .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point},
+      .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point,
+                .boundary_curve = &cubic_bspline_curve_scheme()},
       .limit_masks = limit_masks};
   return scheme;
 }

@@ -24,6 +24,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "subdiv/curves/curve_scheme.h"
+
 namespace subdiv {
 
 double doo_sabin_weight(int k, int i) {
@@ -58,8 +60,9 @@ void corner_point(const LevelView& level, Index corner, MaskBuilder& mask) {
 }
 
 void boundary_point(const LevelView& level, Index edge, Index vertex, MaskBuilder& mask) {
-  mask.add(vertex, 0.75);
-  mask.add(level.topology.other_vertex(edge, vertex), 0.25);
+  // Chaikin's cut of the edge nearer `vertex` (its even mask: 3/4, 1/4).
+  const Index other = level.topology.other_vertex(edge, vertex);
+  for (const CurveMaskEntry& e : chaikin_curve_scheme().even) mask.add(e.offset == 0 ? vertex : other, e.weight);
 }
 
 }  // namespace
@@ -72,7 +75,9 @@ const Scheme& doo_sabin_scheme() {
       "Design 10(6), 1978; boundaries by Doo's replicated edges (Zorin's survey, section 4.1)",
       .split = SplitRule::dual,
       .traits = {.paper_depth_bound = PaperDepthBound::doo_sabin_theorem_5},
-      .masks = {.corner_point = corner_point, .boundary_point = boundary_point}};
+      .masks = {.corner_point = corner_point,
+                .boundary_point = boundary_point,
+                .boundary_curve = &chaikin_curve_scheme()}};
   return scheme;
 }
 

@@ -167,7 +167,8 @@ const Scheme& loop_scheme() {
       .citation = "C. Loop: Smooth subdivision surfaces based on triangles, MS thesis, University of Utah, 1987",
       .split = SplitRule::triangle,
       .traits = {.needs_triangles = true, .paper_depth_bound = PaperDepthBound::loop_theorem_3},
-      .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_beta>},
+      .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_beta>,
+                .boundary_curve = &cubic_bspline_curve_scheme()},
       .limit_masks = limit_masks<loop_beta>};
   return scheme;
 }
@@ -179,7 +180,8 @@ const Scheme& loop_warren_scheme() {
       .citation = "J. Warren: Subdivision methods for geometric design, 1995 (unpublished manuscript), after C. Loop 1987",
       .split = SplitRule::triangle,
       .traits = {.needs_triangles = true},
-      .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_warren_beta>},
+      .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_warren_beta>,
+                .boundary_curve = &cubic_bspline_curve_scheme()},
       .limit_masks = limit_masks<loop_warren_beta>};
   return scheme;
 }

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "subdiv/core/error.h"
+#include "subdiv/curves/curve_scheme.h"
 
 #include "subdiv/rules/bilinear.h"
 #include "subdiv/rules/butterfly.h"
@@ -46,6 +47,19 @@ void check_parameters(const Scheme& scheme) {
     throw ParameterError(std::string(scheme.name) + ": the tension w = " + std::to_string(tension->tension) +
                          " is not finite");
   if (scheme.parameter_check) scheme.parameter_check(scheme.name, scheme.parameters);
+}
+
+std::array<double, 3> boundary_vertex_limit(const Scheme& scheme) {
+  if (!scheme.masks.boundary_curve)
+    throw InvalidInputError(std::string(scheme.name) + ": its boundary rules follow no curve scheme, so the limit on "
+                            "its boundary is not known here");
+  std::array<double, 3> weights{};
+  for (const CurveMaskEntry& e : limit_at_point(*scheme.masks.boundary_curve)) {
+    if (e.offset < -1 || e.offset > 1)
+      throw InvalidInputError(std::string(scheme.name) + ": its boundary curve's limit reaches beyond the neighbours");
+    weights[static_cast<std::size_t>(e.offset + 1)] += e.weight;
+  }
+  return weights;
 }
 
 const Scheme& default_scheme() { return catmull_clark_scheme(); }

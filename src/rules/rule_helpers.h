@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "subdiv/curves/curve_scheme.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv::detail {
@@ -26,13 +27,17 @@ inline std::pair<Index, Index> crease_neighbours(const LevelView& level, Index v
   return {found[0], found[1]};
 }
 
-/// The cubic B-spline curve rule at a crease or boundary vertex:
-/// 1/8, 3/4, 1/8 (shared by Catmull-Clark and Loop).
+/// Adds a curve mask with offsets -1, 0, 1 on the points (before, at, after).
+inline void add_curve_mask(const CurveMask& curve, Index before, Index at, Index after, MaskBuilder& mask) {
+  for (const CurveMaskEntry& e : curve) mask.add(e.offset < 0 ? before : e.offset > 0 ? after : at, e.weight);
+}
+
+/// The cubic B-spline curve rule at a crease or boundary vertex, its even
+/// mask 1/8, 3/4, 1/8 (shared by Catmull-Clark and Loop, whose boundary
+/// curve it is).
 inline void add_crease_vertex(const LevelView& level, Index v, MaskBuilder& mask) {
   const auto [a, b] = crease_neighbours(level, v);
-  mask.add(v, 0.75);
-  mask.add(a, 0.125);
-  mask.add(b, 0.125);
+  add_curve_mask(cubic_bspline_curve_scheme().even, a, v, b, mask);
 }
 
 /// The rules of sharp vertices shared by Catmull-Clark and Loop: a corner
@@ -131,15 +136,18 @@ inline void corner_limit_masks(const VertexNeighbourhood& n, LimitMasks& m, int 
 
 /// Crease (and boundary) vertex: the limit of the cubic B-spline curve,
 /// 1/6, 2/3, 1/6 (survey, section 3.2; OpenSubdiv's assignCreaseLimitMask),
-/// and its derivative (e_a - e_b) / 2 along the curve, towards sharp[0].
-/// The cross tangent (tangent2) is the scheme's.
+/// and its derivative (e_a - e_b) / 2 along the curve, towards sharp[0]:
+/// the curve scheme's limit and tangent masks, sharp[1] before the vertex
+/// and sharp[0] after it. The cross tangent (tangent2) is the scheme's.
 inline void crease_limit_masks(const VertexNeighbourhood& n, LimitMasks& m, int face_weights) {
   for (LimitMask* mask : {&m.position, &m.tangent1, &m.tangent2}) mask->reset(n.edges, face_weights);
   const auto a = static_cast<std::size_t>(n.sharp[0]), b = static_cast<std::size_t>(n.sharp[1]);
-  m.position.vertex = 2.0 / 3.0;
-  m.position.edges[a] = m.position.edges[b] = 1.0 / 6.0;
-  m.tangent1.edges[a] = 0.5;
-  m.tangent1.edges[b] = -0.5;
+  const CurveScheme& curve = cubic_bspline_curve_scheme();
+  const auto apply = [&](const CurveMask& weights, LimitMask& out) {
+    for (const CurveMaskEntry& e : weights) (e.offset < 0 ? out.edges[b] : e.offset > 0 ? out.edges[a] : out.vertex) += e.weight;
+  };
+  apply(curve.limit, m.position);
+  apply(curve.tangent, m.tangent1);
 }
 
 /// A sector of a single face: the cross tangent towards the mean of the two

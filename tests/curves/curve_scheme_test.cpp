@@ -353,6 +353,32 @@ TEST(CurveChaikin, ClosedLimitIsTheUniformQuadraticBSpline) {
   RecordProperty("raw_error_level4", sci(raw_error[4]));
 }
 
+// The limit at a control point's parameter: the primal schemes' limit mask,
+// Chaikin's composed from its cuts and edge-midpoint limit (1/8, 3/4, 1/8),
+// each equal to the spline evaluated at the point (an independent route).
+TEST(CurveScheme, LimitAtPoint) {
+  const CurveMask cubic = limit_at_point(cubic_bspline_curve_scheme());
+  ASSERT_EQ(cubic.size(), cubic_bspline_curve_scheme().limit.size());
+  for (std::size_t j = 0; j < cubic.size(); ++j) {
+    EXPECT_EQ(cubic[j].offset, cubic_bspline_curve_scheme().limit[j].offset);
+    EXPECT_EQ(cubic[j].weight, cubic_bspline_curve_scheme().limit[j].weight);
+  }
+  const CurveMask chaikin = limit_at_point(chaikin_curve_scheme());
+  ASSERT_EQ(chaikin.size(), 3u);
+  const double expected[3] = {1.0 / 8.0, 3.0 / 4.0, 1.0 / 8.0};
+  for (std::size_t j = 0; j < 3; ++j) {
+    EXPECT_EQ(chaikin[j].offset, static_cast<int>(j) - 1);
+    EXPECT_DOUBLE_EQ(chaikin[j].weight, expected[j]);
+  }
+  const Polyline coarse{random_points(7, 5), true};
+  for (Index i = 0; i < 7; ++i) {
+    EXPECT_LE(distance(apply_wrapped(chaikin, coarse.points, i),
+                       spline(coarse.points, true, static_cast<double>(i), quadratic_bspline)), 1e-14) << i;
+    EXPECT_LE(distance(apply_wrapped(limit_at_point(cubic_bspline_curve_scheme()), coarse.points, i),
+                       spline(coarse.points, true, static_cast<double>(i), cubic_bspline)), 1e-14) << i;
+  }
+}
+
 // Refinability: the refined points of a closed polygon are the control points
 // of the same spline on the finer knots. Level L's point k is the control
 // point at parameter k h (cubic) or chaikin_parameter(k, L) (quadratic), h =

@@ -271,7 +271,8 @@ TEST(DooSabinDepth, BoundaryFaceOperatorFollowsRefinement) {
     for (Index f = 0; f < t.face_count() && corner_face == kInvalidIndex; ++f)
       if (t.face_size(f) == 3) corner_face = f;
     ASSERT_NE(corner_face, kInvalidIndex);
-    op = local_face_operator(t, refine_stencil_table(level, doo_sabin_scheme()), MeshTopology(child), corner_face);
+    op = local_face_operator(t, refine_stencil_table(level, doo_sabin_scheme()), MeshTopology(child), corner_face,
+                             boundary_vertex_limit(doo_sabin_scheme()));
     if (!op) level = child;
   }
   ASSERT_TRUE(op) << "the corner's neighbourhood never repeats";

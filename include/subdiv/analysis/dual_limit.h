@@ -13,9 +13,9 @@
 // canonical one (a neighbouring non-quad) that face part alone is applied.
 // On a regular grid this is the biquadratic B-spline at v's parameter.
 //
-// Boundary vertices: the limit of the boundary curve (Chaikin's quadratic
-// B-spline of the boundary polygon) at v, (a + 6 v + b) / 8 with a, b its
-// boundary neighbours; normals are left zero there. Interior vertices with
+// Boundary vertices: the limit of the scheme's boundary curve at v
+// (boundary_vertex_limit(); Doo-Sabin's is Chaikin's quadratic B-spline of
+// the boundary polygon, (a + 6 v + b) / 8 with a, b its boundary neighbours); normals are left zero there. Interior vertices with
 // fewer than 3 faces (no V-face) and isolated vertices keep their position
 // and are counted as approximated.
 

@@ -93,6 +93,14 @@ inline constexpr double kFourPointTension = 1.0 / 16.0;
 /// a w that is not finite.
 CurveScheme four_point_scheme(double w);
 
+/// The limit mask at the parameter of parent point i (offsets from i) on a
+/// closed or interior neighbourhood: the scheme's `limit` for primal
+/// schemes; for dual ones the `limit` mask, anchored at the child edge whose
+/// midpoint sits at point i's parameter, composed with the two cuts next to
+/// point i (odd mask of edge (i-1, i), even mask of edge (i, i+1)): Chaikin's
+/// 1/8, 3/4, 1/8. Empty where `limit` is.
+CurveMask limit_at_point(const CurveScheme& scheme);
+
 /// Every registered curve scheme: cubic-bspline, chaikin, four-point (w = 1/16).
 std::span<const CurveScheme* const> all_curve_schemes();
 /// The curve scheme with this name, or nullptr.

@@ -6,6 +6,7 @@
 // second differences) it yields, scaled by |lambda_1|^-steps, is the
 // amplitude of the face's term (docs/design.md, "Depth").
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -87,8 +88,11 @@ std::optional<Eigen::MatrixXd> canonical_neighbourhood(const DualFaceOperator& o
 /// `parent` to `child`. Nothing when the child's neighbourhood of face f
 /// (the F-face of f is child face f) does not repeat the parent's, when its
 /// rows reach outside it, or when its spectrum is not 1 above |lambda_1| < 1.
+/// `boundary_limit` weighs a boundary vertex's neighbours along the
+/// boundary and itself (boundary_vertex_limit()).
 std::optional<DualFaceOperator> local_face_operator(const MeshTopology& parent, const StencilTable& step,
-                                                    const MeshTopology& child, Index f);
+                                                    const MeshTopology& child, Index f,
+                                                    const std::array<double, 3>& boundary_limit);
 
 /// Face f's two-ring neighbourhood in vertex order (local_face_operator's columns).
 Eigen::MatrixXd local_neighbourhood(const MeshTopology& topology, const std::vector<Vec3>& positions, Index f);

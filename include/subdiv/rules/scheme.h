@@ -6,6 +6,7 @@
 // masks feed the fast path (positions written directly) and recorded stencil
 // tables, so refinement and analysis share one code path.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string_view>
@@ -19,6 +20,8 @@
 #include "subdiv/topology/split.h"
 
 namespace subdiv {
+
+struct CurveScheme;
 
 /// Which rule makes a vertex point, from the sharp edges around the vertex
 /// and its own sharpness: the survey's smooth, dart, crease and corner
@@ -280,6 +283,10 @@ struct SchemeMasks {
   VertexMask vertex_point = nullptr;  ///< primal splits
   CornerMask corner_point = nullptr;  ///< dual split only
   BoundaryPointMask boundary_point = nullptr;  ///< dual split, sqrt3 split
+  /// The curve scheme (curves/curve_scheme.h) whose masks the boundary and
+  /// crease rules apply along the curve, or nullptr where they are the
+  /// scheme's own: limits on the boundary are that curve's.
+  const CurveScheme* boundary_curve = nullptr;
   /// Quad split: the face mask weights the level's new edge points
   /// (MaskBuilder::add_edge_point), so the engine makes edge and vertex
   /// points first and face points last; the edge and vertex masks must then
@@ -341,6 +348,11 @@ inline bool takes_tension(const Scheme& scheme) { return tension_parameters(sche
 /// tension where the masks read it, and the family's own check. Every
 /// refinement entry point calls it.
 void check_parameters(const Scheme& scheme);
+
+/// The limit at a boundary (or crease) vertex along the curve, as weights on
+/// (before, at, after): limit_at_point() of the scheme's boundary_curve.
+/// Throws InvalidInputError for a scheme that declares none.
+std::array<double, 3> boundary_vertex_limit(const Scheme& scheme);
 
 /// Every scheme, in the order `subdiv schemes` lists them.
 std::span<const Scheme* const> all_schemes();
