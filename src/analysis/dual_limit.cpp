@@ -1,7 +1,7 @@
 // Doo-Sabin (dual split) limit positions: the limit of each vertex's V-face
-// (include/subdiv/analysis/dual_limit.h; docs/design.md, "Depth").
+// (src/analysis/dual_limit.h; docs/design.md, "Depth").
 
-#include "subdiv/analysis/dual_limit.h"
+#include "analysis/dual_limit.h"
 
 #include <array>
 #include <algorithm>

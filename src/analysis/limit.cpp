@@ -12,7 +12,7 @@
 #include <tuple>
 
 #include "subdiv/analysis/analyze.h"
-#include "subdiv/analysis/dual_limit.h"
+#include "analysis/dual_limit.h"
 #include "subdiv/analysis/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"

@@ -12,7 +12,7 @@
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/depth/depth_bound.h"
-#include "subdiv/depth/dual_face_bound.h"
+#include "depth/dual_face_bound.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
@@ -152,7 +152,7 @@ int max_valence(const PolygonMesh& mesh) {
 // Doo-Sabin (docs/design.md, "Depth"): the paper's Theorem 5 from the level
 // at which every extraordinary face (!= 4 sides) has the canonical two-ring
 // neighbourhood, plus a term for those faces from powers of their local
-// subdivision matrix (subdiv/depth/dual_face_bound.h).
+// subdivision matrix (depth/dual_face_bound.h).
 constexpr int kMaxDualStart = 6;
 constexpr std::int64_t kMaxDualStartFaces = std::int64_t{1} << 22;
 

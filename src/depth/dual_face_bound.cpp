@@ -1,9 +1,9 @@
 // The Doo-Sabin bound at extraordinary faces: the face's local operator,
 // finding its neighbourhood in a mesh, and the amplitude that powers of the
-// local subdivision matrix give (include/subdiv/depth/dual_face_bound.h;
+// local subdivision matrix give (src/depth/dual_face_bound.h;
 // docs/design.md, "Depth").
 
-#include "subdiv/depth/dual_face_bound.h"
+#include "depth/dual_face_bound.h"
 
 #include <Eigen/Eigenvalues>
 #include <array>

@@ -1,4 +1,4 @@
-#include "file_io.h"
+#include "subdiv/io/file_io.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,7 +11,7 @@
 
 #include "subdiv/core/error.h"
 
-namespace subdiv::detail {
+namespace subdiv {
 
 namespace {
 std::string reason() { return std::strerror(errno); }
@@ -82,4 +82,4 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view d
   }
 }
 
-}  // namespace subdiv::detail
+}  // namespace subdiv

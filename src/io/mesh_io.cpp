@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "file_io.h"
+#include "subdiv/io/file_io.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/obj.h"
 #include "subdiv/io/off.h"
@@ -32,7 +32,7 @@ const char* to_string(FileFormat f) {
 
 MeshFile read_mesh(const std::filesystem::path& path) {
   const FileFormat format = format_from_path(path);
-  const std::string bytes = detail::read_file(path);
+  const std::string bytes = read_file(path);
   switch (format) {
     case FileFormat::obj: return parse_obj(bytes, path.string());
     case FileFormat::ply: return parse_ply(bytes, path.string());
@@ -57,7 +57,7 @@ std::vector<std::string> write_mesh(const PolygonMesh& mesh, const std::filesyst
   if (format != FileFormat::obj && !mesh.polylines.empty())
     warnings.push_back(std::string(to_string(format)) + " has no place for polylines (OBJ 'l' lines): " +
                        std::to_string(mesh.polylines.size()) + " not written");
-  detail::write_file_atomically(path, data);
+  write_file_atomically(path, data);
   return warnings;
 }
 

@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "subdiv/analysis/analyze.h"
-#include "subdiv/analysis/dual_limit.h"
+#include "analysis/dual_limit.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/analysis/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/depth.h"
-#include "subdiv/depth/dual_face_bound.h"
+#include "depth/dual_face_bound.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/topology.h"

@@ -18,7 +18,7 @@
 #include "gcc_report.h"
 #include "commands.h"
 #include "scheme_option.h"
-#include "io/file_io.h"
+#include "subdiv/io/file_io.h"
 #include "plots.h"
 #include "quasi_4_8_analysis.h"
 #include "subdiv/analysis/analyze.h"
@@ -236,7 +236,7 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
     plots.emplace_back(path, render_characteristic_map_plot(characteristic_map_plot(scheme->name, *chosen),
                                                             image_format_from_path(path)));
   }
-  for (const auto& [path, bytes] : plots) detail::write_file_atomically(path, bytes);
+  for (const auto& [path, bytes] : plots) write_file_atomically(path, bytes);
 
   std::string text = opt.json ? analysis_json(scheme->name, results) : format_analysis_table(scheme->name, results);
   if (scheme->steps) {

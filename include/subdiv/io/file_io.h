@@ -1,11 +1,12 @@
 #pragma once
-// Whole-file reads and crash-safe whole-file writes.
+// Whole-file reads and crash-safe whole-file writes (what mesh_io.h writes
+// meshes with; programs writing other files use the same guarantee).
 
 #include <filesystem>
 #include <string>
 #include <string_view>
 
-namespace subdiv::detail {
+namespace subdiv {
 
 /// The file's bytes. Throws IoError (naming the path and the reason) when it
 /// does not exist, is a directory, or cannot be read.
@@ -16,4 +17,4 @@ std::string read_file(const std::filesystem::path& path);
 /// as it was, and IoError is thrown.
 void write_file_atomically(const std::filesystem::path& path, std::string_view data);
 
-}  // namespace subdiv::detail
+}  // namespace subdiv

@@ -1,0 +1,4 @@
+#pragma once
+// subdiv's curves module: curve schemes and the refinement of polylines.
+
+#include "subdiv/curves/curve_scheme.h"

@@ -1,0 +1,8 @@
+#pragma once
+// subdiv's io module: reading and writing OBJ, PLY and OFF files.
+
+#include "subdiv/io/file_io.h"
+#include "subdiv/io/mesh_io.h"
+#include "subdiv/io/obj.h"
+#include "subdiv/io/off.h"
+#include "subdiv/io/ply.h"

@@ -1,0 +1,12 @@
+#pragma once
+// Everything subdiv offers, one header per module.
+
+#include "subdiv/core.h"
+#include "subdiv/mesh.h"
+#include "subdiv/io.h"
+#include "subdiv/topology.h"
+#include "subdiv/rules.h"
+#include "subdiv/curves.h"
+#include "subdiv/refine.h"
+#include "subdiv/analysis.h"
+#include "subdiv/depth.h"
