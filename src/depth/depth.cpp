@@ -9,13 +9,14 @@
 #include <optional>
 #include <string>
 
+#include "depth/dual_face_bound.h"
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
-#include "subdiv/depth/depth_bound.h"
-#include "depth/dual_face_bound.h"
 #include "subdiv/core/error.h"
+#include "subdiv/depth/depth_bound.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
+#include "subdiv/refine/hierarchy.h"
 
 namespace subdiv {
 
@@ -397,10 +398,16 @@ DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   const LimitOptions limit = limit_options(options);
   const int steps = bound.steps_per_level;  // refined and measured with the scheme's own steps and limits
   if (depth > 0) {
-    const PolygonMesh previous = refined(mesh, scheme, options, steps * (depth - 1));
+    // One hierarchy, its last level kept: depth - 1, then one more level of
+    // the same refinement (the level's state carried, not restarted).
+    RefineOptions run = options.refine;
+    run.levels = steps * (depth - 1);
+    run.on_level = nullptr;
+    Hierarchy levels = refine_hierarchy(mesh, scheme, run, KeepLevels::last);
     check.has_previous = true;
-    check.measured_previous = limit_distances(previous, scheme, limit).max;
-    const LimitDistances at_depth = limit_distances(refined(previous, scheme, options, steps), scheme, limit);
+    check.measured_previous = limit_distances(levels.finest().mesh, scheme, limit).max;
+    refine_further(levels, scheme, steps, run, KeepLevels::last);
+    const LimitDistances at_depth = limit_distances(levels.finest().mesh, scheme, limit);
     check.measured = at_depth.max;
     check.approximated = at_depth.approximated;
   } else {
