@@ -34,11 +34,12 @@ void check_quasi_4_8(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 // One level: the bisected child, its topology (the next level's parent
 // topology) and what smoothing keeps.
 struct Step {
-  Step(const PolygonMesh& parent, MeshTopology topology, const RefineOptions& options)
+  Step(const PolygonMesh& parent, MeshTopology topology, const Scheme& scheme)
       : parent_topology(std::move(topology)),
         map(bisection_split(parent, parent_topology, child)),
         child_topology(child),
-        fixed(quasi_4_8_fixed_vertices(child, child_topology, options.quasi_4_8_boundary)) {}
+        fixed(quasi_4_8_fixed_vertices(child, child_topology,
+                                       std::get<Quasi48Parameters>(scheme.parameters).boundary)) {}
   Quasi48Level view() const { return {child_topology, map, fixed, parent_topology}; }
 
   MeshTopology parent_topology;
@@ -117,7 +118,7 @@ PolygonMesh refine_quasi_4_8(const PolygonMesh& mesh, const Scheme& scheme, cons
   PolygonMesh current = mesh;
   MeshTopology topology(current);
   for (int l = 0; l < options.levels; ++l) {
-    Step s(current, std::move(topology), options);
+    Step s(current, std::move(topology), scheme);
     const Quasi48Level level = s.view();
     std::vector<double> xyz;
     xyz.reserve(3 * s.child.positions.size());
@@ -147,7 +148,7 @@ std::vector<StencilTable> refine_quasi_4_8_stencils(const PolygonMesh& mesh, con
   current.vertex_channels.clear();
   MeshTopology topology(current);
   for (int l = 0; l < options.levels; ++l) {
-    Step s(current, std::move(topology), options);
+    Step s(current, std::move(topology), scheme);
     tables.push_back(record(s.view()));
     tables.back().apply(current.positions, s.child.positions);  // the next split reads them
     current = std::move(s.child);

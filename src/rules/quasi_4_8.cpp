@@ -35,7 +35,8 @@ const Scheme& quasi_4_8_scheme() {
                  "triangle meshes; two-pass averaging, tags not smoothed",
       .citation = "L. Velho: Quasi 4-8 subdivision, Computer Aided Geometric Design 18(4), 2001",
       .split = SplitRule::quasi_4_8,
-      .traits = {.needs_triangles = true, .period = 2}};  // two binary steps make one 4-8 step
+      .traits = {.needs_triangles = true, .period = 2},  // two binary steps make one 4-8 step
+      .parameters = Quasi48Parameters{}};
   return scheme;
 }
 

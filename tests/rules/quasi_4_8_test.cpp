@@ -19,11 +19,17 @@ namespace {
 
 using test::ngon_fan;
 
-RefineOptions steps(int n, Quasi48Boundary boundary = Quasi48Boundary::fixed) {
+RefineOptions steps(int n) {
   RefineOptions options;
   options.levels = n;
-  options.quasi_4_8_boundary = boundary;
   return options;
+}
+
+// Quasi 4-8 with this boundary treatment (a family parameter).
+Scheme quasi(Quasi48Boundary boundary) {
+  Scheme s = quasi_4_8_scheme();
+  std::get<Quasi48Parameters>(s.parameters).boundary = boundary;
+  return s;
 }
 
 // A closed-ish test mesh with irregular valences and a boundary: the
@@ -49,15 +55,15 @@ TEST(QuasiFourEight, Registered) {
 TEST(QuasiFourEight, InPlacePassesEqualStencils) {
   for (const Quasi48Boundary b : {Quasi48Boundary::fixed, Quasi48Boundary::smoothed}) {
     const PolygonMesh mesh = bumpy_ngon();
-    const PolygonMesh fast = refine(mesh, quasi_4_8_scheme(), steps(5, b));
+    const PolygonMesh fast = refine(mesh, quasi(b), steps(5));
     PolygonMesh recorded;
-    const std::vector<StencilTable> tables = refine_stencils(mesh, quasi_4_8_scheme(), steps(5, b), &recorded);
+    const std::vector<StencilTable> tables = refine_stencils(mesh, quasi(b), steps(5), &recorded);
     ASSERT_EQ(tables.size(), 5u);
     ASSERT_EQ(fast.face_indices, recorded.face_indices);
     for (Index v = 0; v < fast.vertex_count(); ++v)
       EXPECT_LT(norm(fast.positions[v] - recorded.positions[v]), 1e-13) << "vertex " << v;
     // Through the composed table from the control mesh, too.
-    const StencilTable total = refine_stencil_table(mesh, quasi_4_8_scheme(), steps(5, b));
+    const StencilTable total = refine_stencil_table(mesh, quasi(b), steps(5));
     std::vector<Vec3> p(static_cast<std::size_t>(total.row_count()));
     total.apply(mesh.positions, p);
     for (Index v = 0; v < fast.vertex_count(); ++v) EXPECT_LT(norm(fast.positions[v] - p[v]), 1e-12);
@@ -153,7 +159,7 @@ TEST(QuasiFourEight, TaggedVerticesAndEdgesAreNotSmoothed) {
   mesh.tags.corners.push_back({0, kInfiniteSharpness, CornerType::unspecified, std::nullopt});  // the centre
   mesh.tags.creases.push_back({3, 4, 10.0});                                                    // a rim edge
   mesh.tags.creases.push_back({0, 6, 1.0});                                                     // a spoke
-  const PolygonMesh out = refine(mesh, quasi_4_8_scheme(), steps(4, Quasi48Boundary::smoothed));
+  const PolygonMesh out = refine(mesh, quasi(Quasi48Boundary::smoothed), steps(4));
   EXPECT_EQ(out.positions[0], mesh.positions[0]);
   for (const Index v : {3, 4, 6}) EXPECT_EQ(out.positions[v], mesh.positions[v]) << "vertex " << v;
   // The tagged edges' descendants: tagged segments on the original edges.
@@ -180,7 +186,7 @@ TEST(QuasiFourEight, Boundaries) {
   const PolygonMesh square = ngon_fan(4);
   const PolygonMesh fixed = refine(square, quasi_4_8_scheme(), steps(1));
   for (Index v = 1; v <= 4; ++v) EXPECT_EQ(fixed.positions[v], square.positions[v]);
-  const PolygonMesh smooth = refine(square, quasi_4_8_scheme(), steps(1, Quasi48Boundary::smoothed));
+  const PolygonMesh smooth = refine(square, quasi(Quasi48Boundary::smoothed), steps(1));
   for (Index v = 1; v <= 4; ++v) {
     const Vec3 prev = square.positions[v == 1 ? 4 : v - 1], next = square.positions[v == 4 ? 1 : v + 1];
     const Vec3 expected = 0.75 * square.positions[v] + 0.125 * (prev + next);
@@ -214,7 +220,7 @@ TEST(QuasiFourEight, OpenBoxFigure11) {
   PolygonMesh tagged = box;
   tagged.tags.creases.push_back({0, 4, kInfiniteSharpness});  // the longitudinal edge 0-4-8
   tagged.tags.creases.push_back({4, 8, kInfiniteSharpness});
-  const PolygonMesh smooth = refine(tagged, quasi_4_8_scheme(), steps(4, Quasi48Boundary::smoothed));
+  const PolygonMesh smooth = refine(tagged, quasi(Quasi48Boundary::smoothed), steps(4));
   for (const Index v : {0, 4, 8}) EXPECT_EQ(smooth.positions[v], box.positions[v]) << v;
   for (const Index v : {1, 2, 3, 9, 10, 11}) EXPECT_GT(norm(smooth.positions[v] - box.positions[v]), 1e-3) << v;
 }

@@ -179,7 +179,7 @@ int run_refine(const RefineCommandOptions& opt) {
     throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + surface_scheme_names() +
                             "; curve schemes: " + curve_scheme_names() + ")");
   }
-  const Scheme chosen = with_degree_options(with_tension(*registered, opt.tension), opt.degree);
+  Scheme chosen = with_degree_options(with_tension(*registered, opt.tension), opt.degree);
   const Scheme* scheme = &chosen;
   check_output_path(opt.input, opt.output);
 
@@ -210,7 +210,7 @@ int run_refine(const RefineCommandOptions& opt) {
                                         to_string(SplitRule::sqrt3), to_string(scheme->split), opt.scheme));
   options.start_level = opt.start_level;
   if (options.levels > 0) warn_dropped_tags(opt.input, file.mesh.tags);
-  if (opt.quasi_boundary == "smoothed") options.quasi_4_8_boundary = Quasi48Boundary::smoothed;
+  if (opt.quasi_boundary == "smoothed") std::get<Quasi48Parameters>(chosen.parameters).boundary = Quasi48Boundary::smoothed;
   options.allow_non_manifold = opt.allow_non_manifold;
   options.threads = opt.threads;
   if (opt.boundary == "edge-only") options.boundary = BoundaryInterpolation::edge_only;

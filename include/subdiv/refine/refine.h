@@ -41,28 +41,15 @@ enum class CornerAngles {
 const char* to_string(BoundaryRules);
 const char* to_string(CornerAngles);
 
-struct RefineOptions {
-  int levels = 1;
-  /// The level the input mesh is at: 0 for a control mesh, k for a mesh
-  /// made by k steps of the same scheme. The sqrt3 split alternates its
-  /// boundary treatment with the level (sqrt3_step_trisects()), so refining a
-  /// level-k mesh by one more step equals refining the control mesh k + 1
-  /// steps only when this says k. A hierarchy (hierarchy.h) carries it.
-  int start_level = 0;
+/// The rule choices: what surface a scheme makes from a mesh. Every command
+/// that refines takes the same ones; the analysis reads them too.
+struct RuleOptions {
   /// Overrides the mesh's `interpolateboundary` tag; `none` is not supported.
   std::optional<BoundaryInterpolation> boundary;
   /// Refine meshes with non-manifold edges or vertices (and inconsistently
   /// oriented faces), treating those elements as infinitely sharp, as
   /// OpenSubdiv does. Otherwise they are rejected.
   bool allow_non_manifold = false;
-  /// Worker threads; 0 = all available. Results are identical for any count.
-  int threads = 0;
-  /// Called after each level with its number counted from this call
-  /// (1-based) and the level's mesh.
-  /// Where the engine takes two steps at once (Scheme::two_steps: 4-8 on a
-  /// closed mesh without face-varying channels) the level between them is
-  /// never made, and only the second is reported.
-  std::function<void(int level, const PolygonMesh& mesh)> on_level;
   BoundaryRules boundary_rules = BoundaryRules::standard;
   CornerAngles corner_angles = CornerAngles::fixed;
   /// The flatness parameter s at concave corners (piecewise-smooth rules):
@@ -73,9 +60,26 @@ struct RefineOptions {
   /// semi-sharp edges; creasing.h). The refined levels' tags then name this
   /// method, since their crease sharpness was subdivided by it.
   std::optional<CreaseMethod> crease_method;
-  /// quasi-4-8 only: whether boundary vertices stay in place or the boundary
-  /// polygon is smoothed (rules/quasi_4_8.h). `levels` counts binary steps.
-  Quasi48Boundary quasi_4_8_boundary = Quasi48Boundary::fixed;
+};
+
+/// A refinement: the rule choices, and the run controls below, none of
+/// which changes the surface made.
+struct RefineOptions : RuleOptions {
+  int levels = 1;
+  /// The level the input mesh is at: 0 for a control mesh, k for a mesh
+  /// made by k steps of the same scheme. The sqrt3 split alternates its
+  /// boundary treatment with the level (sqrt3_step_trisects()), so refining a
+  /// level-k mesh by one more step equals refining the control mesh k + 1
+  /// steps only when this says k. A hierarchy (hierarchy.h) carries it.
+  int start_level = 0;
+  /// Worker threads; 0 = all available. Results are identical for any count.
+  int threads = 0;
+  /// Called after each level with its number counted from this call
+  /// (1-based) and the level's mesh.
+  /// Where the engine takes two steps at once (Scheme::two_steps: 4-8 on a
+  /// closed mesh without face-varying channels) the level between them is
+  /// never made, and only the second is reported.
+  std::function<void(int level, const PolygonMesh& mesh)> on_level;
 };
 
 /// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined

@@ -20,20 +20,6 @@
 
 namespace subdiv {
 
-/// Boundary treatment (Velho, sections 4.1 and 4.3).
-enum class Quasi48Boundary {
-  /// Boundary vertices do not move: old ones keep their position, split
-  /// points of boundary edges stay at the midpoint (the paper's planar
-  /// examples, and Figure 11(b), all boundary edges and vertices tagged).
-  fixed,
-  /// The boundary polygon is smoothed by the same two passes restricted to
-  /// it: a split point is the average of its two boundary neighbours (the
-  /// midpoint), an old boundary vertex 1/2 p + 1/(2k) sum of its k new
-  /// boundary neighbours (kept where k = 0). Where both boundary edges of a
-  /// vertex split, this is the cubic B-spline rule (3/4 p + 1/8 (a + b)).
-  smoothed,
-};
-
 const char* to_string(Quasi48Boundary);
 
 const Scheme& quasi_4_8_scheme();

@@ -79,12 +79,31 @@ struct DegreeParameters {
   std::vector<SmoothingWeights> smoothing = {};
 };
 
-/// A family's parameters: none, a tension, or a degree with its smoothing
-/// operators. A registered scheme carries its defaults; set them on a copy
+/// Quasi 4-8's boundary treatment (Velho, sections 4.1 and 4.3).
+enum class Quasi48Boundary {
+  /// Boundary vertices do not move: old ones keep their position, split
+  /// points of boundary edges stay at the midpoint (the paper's planar
+  /// examples, and Figure 11(b), all boundary edges and vertices tagged).
+  fixed,
+  /// The boundary polygon is smoothed by the same two passes restricted to
+  /// it: a split point is the average of its two boundary neighbours (the
+  /// midpoint), an old boundary vertex 1/2 p + 1/(2k) sum of its k new
+  /// boundary neighbours (kept where k = 0). Where both boundary edges of a
+  /// vertex split, this is the cubic B-spline rule (3/4 p + 1/8 (a + b)).
+  smoothed,
+};
+
+/// Quasi 4-8 (rules/quasi_4_8.h): its boundary treatment.
+struct Quasi48Parameters {
+  Quasi48Boundary boundary = Quasi48Boundary::fixed;
+};
+
+/// A family's parameters: none, a tension, a degree with its smoothing
+/// operators, or quasi 4-8's boundary treatment. A registered scheme carries its defaults; set them on a copy
 /// (Scheme is a plain value) to refine or analyse another member; the rule
 /// file's check (Scheme::parameter_check) validates them. Masks read them
 /// from the LevelView.
-using SchemeParameters = std::variant<std::monostate, TensionParameters, DegreeParameters>;
+using SchemeParameters = std::variant<std::monostate, TensionParameters, DegreeParameters, Quasi48Parameters>;
 
 /// The tension of a tension family, or nullptr (const and mutable).
 inline const TensionParameters* tension_parameters(const SchemeParameters& p) { return std::get_if<TensionParameters>(&p); }
