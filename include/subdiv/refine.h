@@ -1,7 +1,11 @@
 #pragma once
-// subdiv's refine module: uniform refinement, the level hierarchy and stencil tables.
+// subdiv's refine module: uniform refinement, the level hierarchy, its
+// stencil tables, and the local subdivision matrix of a configuration (the
+// stencils restricted to its neighbourhood).
 
+#include "subdiv/refine/configuration.h"
 #include "subdiv/refine/creasing.h"
 #include "subdiv/refine/hierarchy.h"
 #include "subdiv/refine/refine.h"
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/refine/ring_mesh.h"
+#include "subdiv/refine/subdivision_matrix.h"

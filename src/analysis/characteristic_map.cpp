@@ -5,7 +5,7 @@
 #include <map>
 #include <numbers>
 
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/refine/refine.h"
 

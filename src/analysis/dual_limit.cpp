@@ -10,7 +10,7 @@
 #include <string>
 
 #include "subdiv/analysis/analyze.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 
 namespace subdiv {

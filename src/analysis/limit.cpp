@@ -13,10 +13,11 @@
 
 #include "subdiv/analysis/analyze.h"
 #include "analysis/dual_limit.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/creasing.h"
+#include "subdiv/refine/hierarchy.h"
 
 #include "../refine/piecewise_smooth.h"
 #include "closed_form_limit.h"
@@ -571,41 +572,29 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   check.levels = levels;
   check_refinable(mesh, scheme, check);
 
-  // Each input vertex is followed through the levels: every split numbers
-  // the vertex points last, so the vertex point of v is child
-  // (child vertices - parent vertices) + v.
+  // Each input vertex is followed through the levels by each split's own
+  // map (its vertex point), refining one level at a time on a hierarchy that
+  // keeps its finest level; the hierarchy carries the level number, so
+  // sqrt3's boundary steps alternate as in one run.
   std::vector<Index> where(static_cast<std::size_t>(mesh.vertex_count()));
   std::iota(where.begin(), where.end(), 0);
-  PolygonMesh current = mesh;
+  Hierarchy hierarchy{{{mesh, options.refine.start_level, std::nullopt}}};
   RefineOptions one = options.refine;
   one.levels = 1;
-  auto follow = [&](Index parent_vertices, Index child_vertices) {
-    for (Index& w : where) w += child_vertices - parent_vertices;
-  };
-  if (point_split) {
-    // In one run, so that sqrt3's steps alternate at the boundary.
-    RefineOptions all = options.refine;
-    all.levels = levels;
-    Index before = current.vertex_count();
-    all.on_level = [&](int, const PolygonMesh& child) {
-      follow(before, child.vertex_count());
-      before = child.vertex_count();
-    };
-    current = refine(current, scheme, all);
-  } else {
-    for (int l = 0; l < levels; ++l) {
-      // The closed-form route stops before a level over its face budget.
-      const std::int64_t child_faces = scheme.split == SplitRule::quad ? std::int64_t{current.corner_count()}
-                                                                       : 4 * std::int64_t{current.face_count()};
-      if (closed_form && child_faces > options.max_resolve_faces) {
-        levels = l;
-        break;
-      }
-      PolygonMesh child = refine(current, scheme, one);
-      follow(current.vertex_count(), child.vertex_count());
-      current = std::move(child);
+  for (int l = 0; l < levels; ++l) {
+    // The closed-form route stops before a level over its face budget.
+    const PolygonMesh& finest = hierarchy.finest().mesh;
+    const std::int64_t child_faces = scheme.split == SplitRule::quad ? std::int64_t{finest.corner_count()}
+                                                                     : 4 * std::int64_t{finest.face_count()};
+    if (closed_form && !point_split && child_faces > options.max_resolve_faces) {
+      levels = l;
+      break;
     }
+    refine_further(hierarchy, scheme, 1, one, KeepLevels::last);
+    const SplitMap& map = *hierarchy.finest().map;
+    for (Index& w : where) w = map.vertex_point(w);
   }
+  PolygonMesh current = std::move(hierarchy.levels.back().mesh);
 
   const MeshTopology t(current);
   const BoundaryInterpolation boundary = options.refine.boundary.value_or(current.tags.boundary_interpolation);

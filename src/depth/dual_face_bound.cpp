@@ -13,8 +13,8 @@
 #include <string>
 
 #include "subdiv/analysis/analyze.h"
-#include "subdiv/analysis/ring_mesh.h"
-#include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/refine/ring_mesh.h"
+#include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/core/error.h"
 
 namespace subdiv {

@@ -15,7 +15,7 @@
 #include "subdiv/core/types.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv {

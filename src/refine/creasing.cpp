@@ -10,11 +10,6 @@
 
 namespace subdiv {
 
-double subdivide_sharpness(double s) {
-  if (s >= kInfiniteSharpness) return s;
-  return s > 1.0 ? s - 1.0 : 0.0;
-}
-
 void subdivide_sharpness_around_vertex(CreaseMethod method, std::span<const double> parent, std::span<double> child) {
   const std::size_t n = parent.size();
   if (method == CreaseMethod::uniform || n < 2) {

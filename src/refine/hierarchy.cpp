@@ -34,7 +34,9 @@ ChildOrigin origin_of(const SplitMap& map, Index child) {
     case SplitRule::identity:
       return {Kind::vertex, child - map.vertex_points};
     case SplitRule::quasi_4_8:
-      break;
+      // [vertex points | split points, one per split edge].
+      if (child < map.edge_points) return {Kind::vertex, child};
+      return {Kind::edge, map.split_edges[static_cast<std::size_t>(child - map.edge_points)]};
   }
   throw InvalidInputError(std::string("the ") + to_string(map.rule) + " split records no child origins");
 }

@@ -11,8 +11,8 @@
 #include <string>
 #include <tuple>
 
-#include "row_accumulator.h"
-#include "subdiv/analysis/subdivision_matrix.h"
+#include "../core/row_accumulator.h"
+#include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/core/error.h"
 
 namespace subdiv::detail {

@@ -20,7 +20,7 @@
 //   the concave corner), so every other eigenvalue is scaled by 1 - s. The
 //   default s = 1 - (1/4) / lambda_3 brings the largest other eigenvalue
 //   lambda_3 (> 1/2 at a concave corner: the "flip") down to 1/4. The
-//   matrix is read off the scheme's own rules (analysis/subdivision_matrix.h)
+//   matrix is read off the scheme's own rules (refine/subdivision_matrix.h)
 //   at the corner's configuration, with the modification off.
 
 #include <memory>
@@ -33,7 +33,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/creasing.h"
 #include "subdiv/refine/refine.h"
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 #include "subdiv/rules/scheme.h"
 #include "subdiv/topology/split.h"
 

@@ -16,8 +16,7 @@
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/validation.h"
 #include "piecewise_smooth.h"
-#include "quasi_4_8_refine.h"
-#include "row_accumulator.h"
+#include "../core/row_accumulator.h"
 
 namespace subdiv {
 
@@ -41,10 +40,13 @@ struct ParentLevel {
   std::span<const double> sector_angle;  ///< piecewise-smooth rules only
   SchemeParameters parameters;
   int level = 0;  ///< the parent's, 0 for the control mesh
+  const SplitMap* level_split = nullptr;  ///< a composite scheme's later steps: its first step's split
+  std::span<const char> held = {};
   // The masks' views, built once per level rather than per child vertex.
-  LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle, {}, parameters, level, creasing.vertex_rule};
+  LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle, {}, parameters, level, creasing.vertex_rule,
+                 level_split, held};
   LevelView below{topology, creasing.edge_sharpness, 1.0, sector_angle, creasing.child_edge_sharpness,  // Chaikin: per edge end
-                  parameters, level, creasing.child_vertex_rule};
+                  parameters, level, creasing.child_vertex_rule, level_split, held};
   const LevelView& view() const { return here; }
   const LevelView& child_view() const { return below; }  // one level down
 };
@@ -54,6 +56,15 @@ struct ParentLevel {
 void child_mask(const ParentLevel& parent, const Scheme& scheme, const SplitMap& map, Index i, MaskBuilder& mask) {
   mask.clear();
   const LevelView& view = parent.view();
+  // The bisection and the identity step have no semi-sharp transitions to
+  // blend: their masks read tags on or off (quasi 4-8) or none.
+  if (map.rule == SplitRule::quasi_4_8) {
+    if (i < map.edge_points) return scheme.masks.vertex_point(view, i, VertexRule::smooth, mask);
+    return scheme.masks.edge_point(view, map.split_edges[static_cast<std::size_t>(i - map.edge_points)],
+                                   EdgeRule::smooth, mask);
+  }
+  if (map.rule == SplitRule::identity)
+    return scheme.masks.vertex_point(view, i, parent.creasing.vertex_rule[static_cast<std::size_t>(i)], mask);
   if (map.rule == SplitRule::dual) {
     if (i < map.edge_points) return scheme.masks.corner_point(view, i - map.corner_points, mask);
     const Index boundary = (i - map.edge_points) / 2;
@@ -136,23 +147,27 @@ struct Level {
 
 // One step: the child's faces and tags, then `fn` with the parent level and
 // its creasing for the masks.
+// `level_split`: for a composite scheme's later steps, the split its first
+// step made (LevelView::level_split).
 template <typename Fn>
 Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& scheme,
-                  BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options, Fn&& fn) {
+                  BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options, Fn&& fn,
+                  const SplitMap* level_split = nullptr) {
   const LevelCreasing creasing = compute_creasing(parent, topology, boundary, method);
   std::vector<double> sector_angle;
   if (options.boundary_rules == BoundaryRules::piecewise_smooth)
     sector_angle = detail::sector_angles(parent, topology, creasing);
   Level level;
-  level.map = split_topology(parent, topology, scheme.split, level.child, creasing.child_edge_sharpness, l);
-  if (scheme.split == SplitRule::sqrt3 && boundary == BoundaryInterpolation::edge_and_corner)
-    sqrt3_keep_one_face_corners(topology, level.map, level.child.tags);
+  level.map = split_topology(parent, topology, scheme.split, level.child,
+                             {.child_end_sharpness = creasing.child_edge_sharpness, .level = l, .boundary = boundary});
   if (level.child.tags.crease_method != method) {  // overridden: the child's tags say how they were made
     level.child.tags.crease_method = method;
     level.child.tags.crease_method_set = true;
   }
   level.flatness = detail::flatness_sites(scheme, topology, creasing, sector_angle, level.map, options);
-  fn(ParentLevel{parent, topology, creasing, sector_angle, scheme.parameters, l}, level);
+  std::vector<char> held;
+  if (scheme.masks.held_vertices) held = scheme.masks.held_vertices(parent, topology, scheme.parameters);
+  fn(ParentLevel{parent, topology, creasing, sector_angle, scheme.parameters, l, level_split, held}, level);
   return level;
 }
 
@@ -162,9 +177,11 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, int l
 // masks weight the previous step's vertices.
 //
 // One level of `scheme`: a single step, or a composite scheme's steps in
-// turn (Scheme::steps): R, a quad split of the level's parent; smoothing
-// steps, identity splits of R's quad mesh; A, a dual split of the level's
-// parent whose masks weight the quad mesh's vertices.
+// turn (Scheme::steps): a split of the level's parent (R, a quad split, or
+// quasi 4-8's bisection); smoothing steps, identity splits of its child; A,
+// a dual split of the level's parent whose masks weight the smoothed
+// vertices. The level's map is the split that numbers its child: the first
+// step's, or A's.
 template <typename Fn>
 Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& scheme,
                    BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options, Fn&& fn) {
@@ -173,30 +190,33 @@ Level refine_level(const PolygonMesh& parent, const MeshTopology& topology, int 
                        [&](const ParentLevel& view, Level& level) { fn(view, scheme, parent, level, true); });
   const std::vector<Scheme> steps = scheme.steps(scheme.parameters);
   Level level;
-  std::optional<MeshTopology> quads;  // R's child's topology
-  PolygonMesh source;                 // the previous step's child
+  SplitMap made;                            // the first step's split
+  std::optional<MeshTopology> split_child;  // its child's topology
+  PolygonMesh source;                       // the previous step's child
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const Scheme& step = steps[i];
     const bool first = i == 0;
     auto evaluate = [&](const PolygonMesh& values) {
       return [&fn, &step, &values, first](const ParentLevel& view, Level& lv) { fn(view, step, values, lv, first); };
     };
-    if (step.split == SplitRule::quad) {
+    if (first && step.split != SplitRule::identity && step.split != SplitRule::dual) {
       level = refine_step(parent, topology, l, step, boundary, method, options, evaluate(parent));
+      made = level.map;
       if (i + 1 < steps.size()) {
-        quads = MeshTopology::from_quad_split(topology, level.child);
-        if (!quads) quads.emplace(level.child);
+        if (step.split == SplitRule::quad) split_child = MeshTopology::from_quad_split(topology, level.child);
+        if (!split_child) split_child.emplace(level.child);
       }
-    } else if (step.split == SplitRule::identity && quads) {
+    } else if (step.split == SplitRule::identity && split_child) {
       source = std::move(level.child);
-      level = refine_step(source, *quads, l, step, boundary, method, options, evaluate(source));
-      if (i + 1 == steps.size()) level.child_topology = std::move(quads);  // the same faces
-    } else if (step.split == SplitRule::dual && quads) {
+      level = refine_step(source, *split_child, l, step, boundary, method, options, evaluate(source), &made);
+      level.map = made;
+      if (i + 1 == steps.size()) level.child_topology = std::move(split_child);  // the same faces
+    } else if (step.split == SplitRule::dual && split_child) {
       source = std::move(level.child);
-      level = refine_step(parent, topology, l, step, boundary, method, options, evaluate(source));
+      level = refine_step(parent, topology, l, step, boundary, method, options, evaluate(source), &made);
     } else {
-      throw InvalidInputError(std::string(scheme.name) + ": a composite scheme's steps are a quad split, then " +
-                              "identity splits, then at most one dual split");
+      throw InvalidInputError(std::string(scheme.name) + ": a composite scheme's steps are a split of the level, " +
+                              "then identity splits, then at most one dual split");
     }
   }
   return level;
@@ -391,22 +411,29 @@ void run_with_threads(int threads, Body&& body) {
 
 namespace {
 
-// The dual, midedge and sqrt3 splits have no rules for sharp features
-// (sqrt3: but corners), holes or non-manifold elements: refuse them, naming
-// the tag's line.
+// Whether one of the splits a level of `scheme` makes reads the parent's
+// positions (quasi 4-8's bisection): the stencil paths then evaluate every
+// level's positions.
+bool splits_read_positions(const Scheme& scheme) { return scheme.split == SplitRule::quasi_4_8; }
+
+// The dual, midedge and sqrt3 splits, and composite schemes, have no rules
+// for sharp features (sqrt3: but corners; quasi 4-8's bisection: tags on or
+// off, which its smoothing holds), holes or non-manifold elements: refuse
+// them, naming the tag's line.
 void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                              const SourceLines* lines) {
   const std::string name(scheme.name);
   if (options.boundary_rules == BoundaryRules::piecewise_smooth)
     throw InvalidInputError(name + " has no piecewise-smooth rules; use the standard boundary rules");
   if (options.allow_non_manifold) throw InvalidInputError(name + " cannot refine non-manifold meshes");
-  for (std::size_t i = 0; i < mesh.tags.creases.size(); ++i)
+  const bool tags_held = scheme.split == SplitRule::quasi_4_8;
+  for (std::size_t i = 0; i < mesh.tags.creases.size() && !tags_held; ++i)
     if (mesh.tags.creases[i].sharpness > 0.0)
       throw InvalidInputError(where(lines, &SourceLines::crease_lines, i) + name + " has no crease rules, but edge (" +
                               std::to_string(mesh.tags.creases[i].v0) + ", " + std::to_string(mesh.tags.creases[i].v1) +
                               ") is tagged as a crease");
   // The sqrt3 split keeps the parent's vertices, and with them corner tags.
-  for (std::size_t i = 0; i < mesh.tags.corners.size() && scheme.split != SplitRule::sqrt3; ++i)
+  for (std::size_t i = 0; i < mesh.tags.corners.size() && scheme.split != SplitRule::sqrt3 && !tags_held; ++i)
     if (mesh.tags.corners[i].sharpness > 0.0)
       throw InvalidInputError(where(lines, &SourceLines::corner_lines, i) + name + " has no corner rules, but vertex " +
                               std::to_string(mesh.tags.corners[i].vertex) + " is tagged as a corner");
@@ -425,13 +452,13 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
     throw InvalidInputError("the start level must be >= 0, not " + std::to_string(options.start_level));
   if (boundary_of(mesh, options) == BoundaryInterpolation::none)
     throw InvalidInputError("boundary interpolation 'none' is not supported; use edge-only or edge-and-corner");
-  // quasi 4-8 reads tags its own way (quasi_4_8_refine.cpp).
-  if ((!is_primal(scheme.split) && scheme.split != SplitRule::quasi_4_8) || scheme.steps)
-    check_no_sharp_features(mesh, scheme, options, lines);
+  if (!is_primal(scheme.split) || scheme.steps) check_no_sharp_features(mesh, scheme, options, lines);
   if (scheme.steps) {
     // The steps' own checks (degree, weights), and the split they make.
     const std::vector<Scheme> steps = scheme.steps(scheme.parameters);
-    const SplitRule made = !steps.empty() && steps.back().split == SplitRule::dual ? SplitRule::dual : SplitRule::quad;
+    const SplitRule made = steps.empty()                                 ? SplitRule::identity
+                           : steps.back().split == SplitRule::dual ? SplitRule::dual
+                                                                   : steps.front().split;
     if (made != scheme.split)
       throw InvalidInputError(std::string(scheme.name) + ": its steps make a " + to_string(made) +
                               " but the scheme says " + to_string(scheme.split) + " (set the degree with set_degree)");
@@ -461,7 +488,7 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
                          report.error_count();
     if (fixable)
       for (auto& issue : report.issues)
-        issue.message += " (allowing non-manifold input, subdiv refine --allow-non-manifold, makes it sharp)";
+        issue.message += " (RuleOptions::allow_non_manifold refines it as a sharp feature)";
     require_valid(report, path);
   }
   if (scheme.traits.needs_closed_mesh)
@@ -478,7 +505,7 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
                                 std::string(scheme.name) + " needs a " + kind + " mesh, but face " + std::to_string(f) +
                                 " has " + std::to_string(mesh.face_size(f)) + " vertices (" + remedy + ")");
   };
-  if (scheme.traits.needs_triangles) require_faces_of(3, "triangle", "triangulate it first, e.g. with --triangulate");
+  if (scheme.traits.needs_triangles) require_faces_of(3, "triangle", "triangulate it first: triangulate()");
   if (scheme.traits.needs_quads) require_faces_of(4, "quad", "one bilinear or catmull-clark level first makes every face a quad");
   return topology;
 }
@@ -492,7 +519,6 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 
 PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                    const SourceLines* lines) {
-  if (scheme.split == SplitRule::quasi_4_8) return detail::refine_quasi_4_8(mesh, scheme, options, lines);
   MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
@@ -514,19 +540,6 @@ Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const 
                            KeepLevels keep, const SourceLines* lines) {
   Hierarchy h;
   const int last = options.start_level + options.levels;
-  if (scheme.split == SplitRule::quasi_4_8) {  // its own engine: levels without maps
-    RefineOptions collect = options;
-    if (keep == KeepLevels::all) {
-      h.levels.push_back({mesh, options.start_level, std::nullopt});
-      collect.on_level = [&](int l, const PolygonMesh& child) {
-        h.levels.push_back({child, options.start_level + l, std::nullopt});
-        if (options.on_level) options.on_level(l, child);
-      };
-    }
-    PolygonMesh finest = detail::refine_quasi_4_8(mesh, scheme, collect, lines);
-    if (keep == KeepLevels::last) h.levels.push_back({std::move(finest), last, std::nullopt});
-    return h;
-  }
   MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
@@ -556,7 +569,6 @@ Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const 
 
 std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                                           PolygonMesh* final_level) {
-  if (scheme.split == SplitRule::quasi_4_8) return detail::refine_quasi_4_8_stencils(mesh, scheme, options, final_level);
   MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
@@ -572,7 +584,7 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
             else tables.back() = record_stencils(view, step, lv.map, &tables.back());
             detail::apply_flatness(lv.flatness, tables.back());
           });
-      if (final_level) tables.back().apply(parent.positions, level.child.positions);
+      if (final_level || splits_read_positions(scheme)) tables.back().apply(parent.positions, level.child.positions);
       return level;
     });
     if (final_level) *final_level = std::move(last);
@@ -581,10 +593,6 @@ std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme&
 }
 
 StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
-  if (scheme.split == SplitRule::quasi_4_8) {
-    const std::vector<StencilTable> levels = detail::refine_quasi_4_8_stencils(mesh, scheme, options, nullptr);
-    return levels.empty() ? StencilTable::identity(mesh.vertex_count()) : compose(levels);
-  }
   MeshTopology coarse = checked_topology(mesh, scheme, options, nullptr);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
@@ -592,11 +600,13 @@ StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme,
   run_with_threads(options.threads, [&] {
     refine_levels(mesh, std::move(coarse), scheme, options,
                   [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
-      return refine_level(parent, topology, l, level_scheme, boundary, method, options,
-                          [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool) {
-                            total = record_stencils(view, step, lv.map, total ? &*total : nullptr);
-                            detail::apply_flatness(lv.flatness, *total);
-                          });
+      Level level = refine_level(parent, topology, l, level_scheme, boundary, method, options,
+                                 [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool) {
+                                   total = record_stencils(view, step, lv.map, total ? &*total : nullptr);
+                                   detail::apply_flatness(lv.flatness, *total);
+                                 });
+      if (splits_read_positions(scheme)) total->apply(mesh.positions, level.child.positions);
+      return level;
     });
   });
   return total ? std::move(*total) : StencilTable::identity(mesh.vertex_count());

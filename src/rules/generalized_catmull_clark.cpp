@@ -226,7 +226,7 @@ const Scheme& generalized_catmull_clark_scheme() {
     SmoothingWeights cc;
     cc.rule = SmoothingWeights::Rule::catmull_clark;
     return composite("gcc",
-                     "approximating, generalized Catmull-Clark of any degree n (--degree, --alpha, --beta; quad split "
+                     "approximating, generalized Catmull-Clark of any degree n with smoothing weights alpha, beta (quad split "
                      "for odd n, dual for even n); default n = 3 with Catmull-Clark's weights",
                      "Q. Chen, H. Prautzsch: Generalized Catmull-Clark subdivision, Karlsruhe Reports in Informatics "
                      "2012,16",
@@ -237,7 +237,7 @@ const Scheme& generalized_catmull_clark_scheme() {
 
 const Scheme& midpoint_scheme() {
   static const Scheme scheme =
-      composite("midpoint", "approximating, midpoint subdivision M_n of any degree (--degree, default 3; quad split "
+      composite("midpoint", "approximating, midpoint subdivision M_n of any degree n, default 3 (quad split "
                             "for odd n, dual for even n); B-splines of degree n on regular quads",
                 "H. Prautzsch, Q. Chen: Analyzing midpoint subdivision, CAGD 28(7), 2011; as A^(n-1) R of Chen, "
                 "Prautzsch 2012",

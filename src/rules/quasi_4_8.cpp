@@ -28,18 +28,6 @@ namespace subdiv {
 
 const char* to_string(Quasi48Boundary b) { return b == Quasi48Boundary::fixed ? "fixed" : "smoothed"; }
 
-const Scheme& quasi_4_8_scheme() {
-  static const Scheme scheme{
-      .name = "quasi-4-8",
-      .summary = "approximating, geometry-sensitive bisection (one binary step per level, two per 4-8 step), "
-                 "triangle meshes; two-pass averaging, tags not smoothed",
-      .citation = "L. Velho: Quasi 4-8 subdivision, Computer Aided Geometric Design 18(4), 2001",
-      .split = SplitRule::quasi_4_8,
-      .traits = {.needs_triangles = true, .period = 2},  // two binary steps make one 4-8 step
-      .parameters = Quasi48Parameters{}};
-  return scheme;
-}
-
 std::vector<char> quasi_4_8_fixed_vertices(const PolygonMesh& child, const MeshTopology& child_topology,
                                            Quasi48Boundary boundary) {
   std::vector<char> fixed(static_cast<std::size_t>(child.vertex_count()), 0);
@@ -59,44 +47,86 @@ std::vector<char> quasi_4_8_fixed_vertices(const PolygonMesh& child, const MeshT
 
 namespace {
 
-bool on_boundary(const Quasi48Level& level, Index v) { return level.child.vertex_kind(v) == VertexKind::boundary; }
+std::vector<char> held_vertices(const PolygonMesh& level, const MeshTopology& topology,
+                                const SchemeParameters& parameters) {
+  return quasi_4_8_fixed_vertices(level, topology, std::get<Quasi48Parameters>(parameters).boundary);
+}
+
+// Whether vertex v of the bisected level is a split point (the bisection
+// numbers the old vertices first, then the split points).
+bool is_split_point(const LevelView& level, Index v) { return v >= level.level_split->edge_points; }
+
+bool is_held(const LevelView& level, Index v) { return level.held[static_cast<std::size_t>(v)] != 0; }
 
 // The neighbours a vertex is smoothed over: all of them inside, those along
 // boundary edges on a (smoothed) boundary.
 template <typename Fn>
-void for_each_smoothing_neighbour(const Quasi48Level& level, Index v, Fn&& fn) {
-  const bool boundary = on_boundary(level, v);
-  for (const Index e : level.child.vertex_edges(v))
-    if (!boundary || level.child.is_boundary_edge(e)) fn(level.child.other_vertex(e, v));
+void for_each_smoothing_neighbour(const LevelView& level, Index v, Fn&& fn) {
+  const MeshTopology& t = level.topology;
+  const bool boundary = t.vertex_kind(v) == VertexKind::boundary;
+  for (const Index e : t.vertex_edges(v))
+    if (!boundary || t.is_boundary_edge(e)) fn(t.other_vertex(e, v));
 }
 
-}  // namespace
+// The bisection's placement: old vertices kept, a split point at its
+// edge's midpoint (which a held split point keeps).
+void kept_vertex(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
 
-void quasi_4_8_new_vertex_mask(const Quasi48Level& level, Index v, MaskBuilder& mask) {
-  if (level.fixed[static_cast<std::size_t>(v)]) {
-    const Index e = level.map.split_edges[static_cast<std::size_t>(v - level.map.old_vertex_count)];
-    const auto [a, b] = level.parent.edge_vertices(e);
-    mask.add(a, 0.5);
-    mask.add(b, 0.5);
-    return;
-  }
+void edge_midpoint(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) {
+  const auto [a, b] = level.topology.edge_vertices(e);
+  mask.add(a, 0.5);
+  mask.add(b, 0.5);
+}
+
+// Pass 1: a split point the average of its m smoothing neighbours (m = 4
+// inside: its edge's ends and the two opposite vertices, all old, since a
+// face has at most one split edge); old vertices unchanged.
+void pass_1(const LevelView& level, Index v, VertexRule, MaskBuilder& mask) {
+  if (!is_split_point(level, v) || is_held(level, v)) return mask.add(v, 1.0);
   int m = 0;
   for_each_smoothing_neighbour(level, v, [&](Index) { ++m; });
   for_each_smoothing_neighbour(level, v, [&](Index n) { mask.add(n, 1.0 / m); });
 }
 
-void quasi_4_8_old_vertex_mask(const Quasi48Level& level, Index v, MaskBuilder& mask) {
+// Pass 2: an old vertex 1/2 itself + 1/(2k) its k split-point neighbours
+// after pass 1 (kept where k = 0); split points unchanged.
+void pass_2(const LevelView& level, Index v, VertexRule, MaskBuilder& mask) {
   int k = 0;
-  if (!level.fixed[static_cast<std::size_t>(v)])
-    for_each_smoothing_neighbour(level, v, [&](Index n) { k += level.map.is_new(n) ? 1 : 0; });
-  if (k == 0) {
-    mask.add(v, 1.0);
-    return;
-  }
+  if (!is_split_point(level, v) && !is_held(level, v))
+    for_each_smoothing_neighbour(level, v, [&](Index n) { k += is_split_point(level, n) ? 1 : 0; });
+  if (k == 0) return mask.add(v, 1.0);
   mask.add(v, 0.5);
   for_each_smoothing_neighbour(level, v, [&](Index n) {
-    if (level.map.is_new(n)) mask.add_face_point(n - level.map.old_vertex_count, 0.5 / k);
+    if (is_split_point(level, n)) mask.add(n, 0.5 / k);
   });
+}
+
+Scheme step(std::string_view name, SplitRule split, SchemeMasks masks) {
+  return Scheme{.name = name, .split = split, .traits = {.needs_triangles = true}, .masks = masks};
+}
+
+std::vector<Scheme> steps_of(const SchemeParameters& parameters) {
+  std::vector<Scheme> steps{
+      step("quasi-4-8 bisection", SplitRule::quasi_4_8, {.edge_point = edge_midpoint, .vertex_point = kept_vertex}),
+      step("quasi-4-8 pass 1", SplitRule::identity, {.vertex_point = pass_1, .held_vertices = held_vertices}),
+      step("quasi-4-8 pass 2", SplitRule::identity, {.vertex_point = pass_2, .held_vertices = held_vertices})};
+  for (Scheme& s : steps) s.parameters = parameters;
+  return steps;
+}
+
+}  // namespace
+
+const Scheme& quasi_4_8_scheme() {
+  static const Scheme scheme{
+      .name = "quasi-4-8",
+      .summary = "approximating, geometry-sensitive bisection (one binary step per level, two per 4-8 step), "
+                 "triangle meshes; two-pass averaging, tags not smoothed",
+      .citation = "L. Velho: Quasi 4-8 subdivision, Computer Aided Geometric Design 18(4), 2001",
+      .split = SplitRule::quasi_4_8,
+      .traits = {.needs_triangles = true, .period = 2},  // two binary steps make one 4-8 step
+      .steps = steps_of,
+      .parameters = Quasi48Parameters{}};
+  return scheme;
 }
 
 }  // namespace subdiv

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "split_detail.h"
+#include "subdiv/topology/bisection_split.h"
 #include "subdiv/core/error.h"
 
 namespace subdiv {
@@ -41,17 +42,12 @@ const char* to_string(SplitRule r) {
 
 namespace detail {
 
-double child_sharpness(double s) {
-  if (s >= kInfiniteSharpness) return s;
-  return s > 1.0 ? s - 1.0 : 0.0;
-}
-
 namespace {
 
 void propagate_corners(const Tags& in, Index vertex_count, const SplitMap& map, Tags& out) {
   for (const CornerTag& c : in.corners) {
     CornerTag t = c;
-    t.sharpness = child_sharpness(c.sharpness);
+    t.sharpness = subdivide_sharpness(c.sharpness);
     if (t.sharpness <= 0.0 || c.vertex < 0 || c.vertex >= vertex_count) continue;
     t.vertex = map.vertex_point(c.vertex);
     out.corners.push_back(t);
@@ -82,12 +78,18 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
     propagate_corners(in, parent.vertex_count(), map, out);
     return;
   }
+  if (map.rule == SplitRule::identity) {  // the same elements: every tag as it is
+    out.creases = in.creases;
+    out.corners = in.corners;
+    out.holes = in.holes;
+    return;
+  }
   if (!is_primal(map.rule)) return;  // no sharp features there (check_refinable)
 
   for (const CreaseTag& c : in.creases) {
     const Index e = topology.find_edge(c.v0, c.v1);
     if (e == kInvalidIndex) continue;
-    double s0 = child_sharpness(c.sharpness), s1 = s0;  // the halves at c.v0 and c.v1
+    double s0 = subdivide_sharpness(c.sharpness), s1 = s0;  // the halves at c.v0 and c.v1
     if (!child_end_sharpness.empty() && c.sharpness > 0.0 && c.sharpness < kInfiniteSharpness) {
       // Chaikin: each half its own value, unless the edge is infinitely
       // sharp anyway (a boundary), where the tag decays as usual.
@@ -123,18 +125,29 @@ void require_edges(const MeshTopology& topology) {
 }  // namespace detail
 
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
-                        PolygonMesh& child, std::span<const double> child_end_sharpness, int level) {
-  if (rule == SplitRule::quasi_4_8)  // its split reads positions
-    throw InvalidInputError("the quasi 4-8 bisection is not a topological split (bisection_split.h)");
+                        PolygonMesh& child, const SplitOptions& options) {
   detail::require_edges(topology);
+  if (rule == SplitRule::quasi_4_8) {  // tags and face-varying channels split by the bisection itself
+    BisectionMap bisection = bisection_split(parent, topology, child);
+    SplitMap map;
+    map.rule = rule;
+    map.face_points = map.vertex_points = 0;
+    map.edge_points = bisection.old_vertex_count;
+    map.child_vertex_count = bisection.child_vertex_count();
+    map.split_edges = std::move(bisection.split_edges);
+    child.vertex_channels.clear();
+    return map;
+  }
   SplitMap map = rule == SplitRule::quad       ? detail::quad_split(topology, child)
                  : rule == SplitRule::triangle ? detail::triangle_split(topology, child)
                  : rule == SplitRule::dual     ? detail::dual_split(topology, child)
                  : rule == SplitRule::identity ? detail::identity_split(topology, child)
-                 : rule == SplitRule::sqrt3    ? detail::sqrt3_split(topology, child, level)
+                 : rule == SplitRule::sqrt3    ? detail::sqrt3_split(topology, child, options.level)
                  : rule == SplitRule::sqrt2    ? detail::sqrt2_split(topology, child)
                                                : detail::midedge_split(topology, child);
-  detail::propagate_tags(parent, topology, map, child_end_sharpness, child);
+  detail::propagate_tags(parent, topology, map, options.child_end_sharpness, child);
+  if (rule == SplitRule::sqrt3 && options.boundary == BoundaryInterpolation::edge_and_corner)
+    detail::sqrt3_keep_one_face_corners(topology, map, child.tags);
   // Vertex channels are the masks' to fill; face-varying ones split here.
   child.vertex_channels.clear();
   child.face_varying_channels.resize(parent.face_varying_channels.size());

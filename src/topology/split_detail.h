@@ -5,9 +5,6 @@
 
 namespace subdiv::detail {
 
-/// Sharpness of a tag one level down: infinite stays, otherwise minus one.
-double child_sharpness(double s);
-
 SplitMap quad_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap triangle_split(const MeshTopology& topology, PolygonMesh& child);
 SplitMap dual_split(const MeshTopology& topology, PolygonMesh& child);
@@ -16,6 +13,9 @@ SplitMap identity_split(const MeshTopology& topology, PolygonMesh& child);
 /// `level`: the parent's level, whose parity says whether the step trisects.
 SplitMap sqrt3_split(const MeshTopology& topology, PolygonMesh& child, int level);
 SplitMap sqrt2_split(const MeshTopology& topology, PolygonMesh& child);
+/// Tags the vertex point of each boundary vertex with one face as an
+/// infinitely sharp corner (SplitOptions::boundary).
+void sqrt3_keep_one_face_corners(const MeshTopology& parent, const SplitMap& map, Tags& child_tags);
 
 /// Face-varying values linear within each face, for the child's corners.
 void quad_split_face_varying(const MeshTopology& topology, const FaceVaryingChannel& in, FaceVaryingChannel& out);

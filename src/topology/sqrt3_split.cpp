@@ -42,6 +42,10 @@ namespace subdiv {
 
 bool sqrt3_step_trisects(int level) { return level % 2 == 1; }
 
+}  // namespace subdiv
+
+namespace subdiv::detail {
+
 void sqrt3_keep_one_face_corners(const MeshTopology& parent, const SplitMap& map, Tags& child_tags) {
   if (parent.boundary_loops().empty()) return;
   for (Index v = 0; v < parent.vertex_count(); ++v) {
@@ -53,10 +57,6 @@ void sqrt3_keep_one_face_corners(const MeshTopology& parent, const SplitMap& map
     if (!tagged) child_tags.corners.push_back({child, kInfiniteSharpness, CornerType::unspecified, std::nullopt});
   }
 }
-
-}  // namespace subdiv
-
-namespace subdiv::detail {
 
 namespace {
 

@@ -10,7 +10,7 @@
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/spectrum.h"
-#include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/core/error.h"
 #include "subdiv/rules/generalized_catmull_clark.h"
 #include "support/gcc_schemes.h"

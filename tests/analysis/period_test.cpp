@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "subdiv/analysis/analyze.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/rules/catmull_clark.h"
 #include "subdiv/rules/doo_sabin.h"

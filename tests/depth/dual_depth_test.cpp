@@ -14,7 +14,7 @@
 #include "subdiv/analysis/analyze.h"
 #include "analysis/dual_limit.h"
 #include "subdiv/analysis/limit.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/depth.h"
 #include "depth/dual_face_bound.h"

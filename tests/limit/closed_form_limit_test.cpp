@@ -15,7 +15,7 @@
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/rules/catmull_clark.h"
 #include "subdiv/rules/loop.h"
 #include "support/test_meshes.h"

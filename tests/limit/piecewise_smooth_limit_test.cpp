@@ -15,7 +15,7 @@
 #include <string>
 
 #include "subdiv/analysis/limit.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/triangulate.h"

@@ -22,7 +22,7 @@
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/adaptive.h"
 #include "subdiv/depth/depth.h"

@@ -185,5 +185,35 @@ TEST(Hierarchy, ChildOriginsNameTheirParentElements) {
   }
 }
 
+// Quasi 4-8 runs in the engine like every scheme: its levels carry the
+// bisection's map, whose split points lie between the ends of the parent
+// edge they split (both ends are their neighbours in the child), and whose
+// other children are the parent's vertices, numbered as they were.
+TEST(Hierarchy, QuasiFourEightLevelsCarryTheBisection) {
+  const Scheme& scheme = *find_scheme("quasi-4-8");
+  const Hierarchy h = refine_hierarchy(test::jittered(test::triangle_grid(3, 3), 11), scheme, levels(3));
+  ASSERT_EQ(h.levels.size(), 4u);
+  for (std::size_t l = 1; l < h.levels.size(); ++l) {
+    ASSERT_TRUE(h.levels[l].map);
+    const SplitMap& map = *h.levels[l].map;
+    EXPECT_EQ(map.rule, SplitRule::quasi_4_8);
+    const MeshTopology parent(h.levels[l - 1].mesh), child(h.levels[l].mesh);
+    EXPECT_EQ(map.child_vertex_count, h.levels[l].mesh.vertex_count());
+    EXPECT_EQ(map.edge_points, h.levels[l - 1].mesh.vertex_count());
+    EXPECT_FALSE(map.split_edges.empty());
+    for (Index c = 0; c < map.child_vertex_count; ++c) {
+      const ChildOrigin o = origin_of(map, c);
+      if (c < map.edge_points) {
+        EXPECT_EQ(o.kind, ChildOrigin::Kind::vertex);
+        EXPECT_EQ(o.parent, c);
+        continue;
+      }
+      ASSERT_EQ(o.kind, ChildOrigin::Kind::edge);
+      for (const Index end : parent.edge_vertices(o.parent))
+        EXPECT_NE(child.find_edge(c, end), kInvalidIndex) << "level " << l << ", split point " << c;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace subdiv

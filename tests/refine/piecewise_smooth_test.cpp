@@ -17,8 +17,8 @@
 
 #include "refine/piecewise_smooth.h"
 #include "subdiv/analysis/analyze.h"
-#include "subdiv/analysis/ring_mesh.h"
-#include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/refine/ring_mesh.h"
+#include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/catmull_clark.h"

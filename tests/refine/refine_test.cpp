@@ -232,7 +232,7 @@ TEST(Refine, RejectsWhatItCannotRefine) {
     refine(bowtie, scheme("loop"));
     FAIL();
   } catch (const ValidationError& e) {
-    EXPECT_NE(std::string(e.what()).find("--allow-non-manifold"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("RuleOptions::allow_non_manifold"), std::string::npos) << e.what();
   }
   RefineOptions allow;
   allow.allow_non_manifold = true;

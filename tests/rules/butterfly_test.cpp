@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "subdiv/analysis/analyze.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/refine/refine.h"
 #include "support/stencil_rows.h"
 #include "support/test_meshes.h"

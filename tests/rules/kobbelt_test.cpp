@@ -10,7 +10,7 @@
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/topology.h"

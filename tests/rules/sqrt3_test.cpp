@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "subdiv/analysis/analyze.h"
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/validation.h"

@@ -9,7 +9,7 @@
 
 #include "subdiv/mesh/polygon_mesh.h"
 #include "subdiv/refine/refine.h"
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 #include "support/stencil_rows.h"
 
 namespace subdiv::test {

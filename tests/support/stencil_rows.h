@@ -4,7 +4,7 @@
 
 #include <map>
 
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 
 namespace subdiv::test {
 

@@ -151,7 +151,7 @@ void expect_derived_topology_is_the_generic_one(const NamedMeshes& cases, SplitR
     std::optional<MeshTopology> topology = MeshTopology(parent);
     for (int level = 0; level < levels; ++level) {
       PolygonMesh child;
-      split_topology(parent, *topology, rule, child, {}, level);
+      split_topology(parent, *topology, rule, child, {.level = level});
       const std::optional<MeshTopology> derived = derive(*topology, child);
       ASSERT_TRUE(derived.has_value()) << name;
       EXPECT_TRUE(*derived == MeshTopology(child)) << name << " level " << level;
@@ -271,7 +271,7 @@ TEST(Split, FaceVaryingDataOfThePointSplits) {
         value[static_cast<std::size_t>(mesh.face_indices[c])] = {in.values[at], in.values[at + 1], 0.0};
       }
       Split s;
-      s.map = split_topology(mesh, t, rule, s.child, {}, level);
+      s.map = split_topology(mesh, t, rule, s.child, {.level = level});
       std::vector<Vec3> expected(static_cast<std::size_t>(s.map.child_vertex_count));
       for (Index i = 0; i < s.map.edge_points; ++i) {
         const Index f = s.map.point_face(i);

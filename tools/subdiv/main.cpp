@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli_terms.h"
 #include "commands.h"
 #include "subdiv/core/error.h"
 
@@ -72,7 +73,7 @@ int main(int argc, char** argv) {
     print_error("no command given (run 'subdiv --help' for usage)");
     return kExitBadInput;
   } catch (const subdiv::Error& e) {
-    print_error(e.what());
+    print_error(subdiv::cli::in_cli_terms(e.what()));
     return kExitBadInput;
   } catch (const std::bad_alloc&) {
     print_error("internal error: out of memory");

@@ -14,7 +14,7 @@
 #include "subdiv/analysis/characteristic_map.h"
 #include "subdiv/analysis/regular_smoothness.h"
 #include "subdiv/analysis/spectrum.h"
-#include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/analysis/verdict.h"
 #include "subdiv/refine/refine.h"
 

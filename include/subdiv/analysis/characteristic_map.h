@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/mesh/polygon_mesh.h"
 
 namespace subdiv {

@@ -36,7 +36,7 @@
 #include <vector>
 
 #include "subdiv/core/types.h"
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 
 namespace subdiv {
 

@@ -21,6 +21,14 @@ struct CreaseTag {
   friend bool operator==(const CreaseTag&, const CreaseTag&) = default;
 };
 
+/// A crease or corner sharpness one level down (OpenSubdiv's uniform rule,
+/// Sdc::Crease::SubdivideUniformSharpness): infinite stays infinite, a
+/// semi-sharp one loses 1, down to 0 (smooth).
+inline double subdivide_sharpness(double s) {
+  if (s >= kInfiniteSharpness) return s;
+  return s > 1.0 ? s - 1.0 : 0.0;
+}
+
 /// Whether a corner's sector is convex (angle < pi) or concave (angle > pi).
 /// Unspecified leaves the choice to the scheme's rules (OpenSubdiv semantics).
 enum class CornerType { unspecified, convex, concave };

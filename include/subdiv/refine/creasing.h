@@ -51,9 +51,6 @@ struct LevelCreasing {
   std::vector<double> child_edge_sharpness;
 };
 
-/// OpenSubdiv's uniform rule for a sharpness one level down.
-double subdivide_sharpness(double s);
-
 /// The sharpness one level down of the children, at vertex v, of the edges
 /// around v whose sharpnesses are `parent` (Sdc::Crease::
 /// SubdivideEdgeSharpnessesAroundVertex): subdivide_sharpness() with the

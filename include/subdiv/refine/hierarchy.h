@@ -37,9 +37,10 @@ struct HierarchyLevel {
   /// Steps from the control mesh (0 for the control mesh itself).
   int level = 0;
   /// The split that made this level from the previous one; empty for the
-  /// control mesh and for quasi 4-8's geometric bisection, and for a level
-  /// made by a composite scheme or two steps at once it is the level's
-  /// overall split.
+  /// control mesh. For a level made by a composite scheme (its smoothing
+  /// steps keep the numbering) or by two steps at once it is the split that
+  /// numbers the level's vertices. Quasi 4-8's bisection reads positions:
+  /// its map holds the edges it split.
   std::optional<SplitMap> map;
 };
 

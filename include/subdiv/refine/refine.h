@@ -9,9 +9,8 @@
 
 #include "subdiv/mesh/polygon_mesh.h"
 #include "subdiv/mesh/source_lines.h"
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 #include "subdiv/refine/creasing.h"
-#include "subdiv/rules/quasi_4_8.h"
 #include "subdiv/rules/scheme.h"
 
 namespace subdiv {

@@ -146,6 +146,13 @@ struct LevelView {
   /// points next to a vertex that depend on its rule (sqrt3's boundary
   /// points next to a corner) read it. Empty in views made outside the engine.
   std::span<const VertexRule> vertex_rule = {};
+  /// A composite scheme's later steps: the split its first step made of the
+  /// level's parent (which child vertices are new, and from what); nullptr
+  /// otherwise.
+  const SplitMap* level_split = nullptr;
+  /// Per vertex, whether the scheme keeps it in place
+  /// (SchemeMasks::held_vertices); empty where the masks declare none.
+  std::span<const char> held = {};
 
   bool is_sharp(Index e) const {
     return !edge_sharpness.empty() && edge_sharpness[static_cast<std::size_t>(e)] > sharp_above;
@@ -249,13 +256,21 @@ using PointEvaluator = bool (*)(const LevelView& level, const SplitMap& map, Ind
                                 std::span<const Vec3> parent_positions, std::span<const Vec3> child_positions,
                                 Vec3& out);
 
+/// The vertices of a level that a scheme's masks keep in place (quasi 4-8's
+/// tagged vertices), from the level's mesh (its tags) and topology: one
+/// entry per vertex, nonzero where held (LevelView::held).
+using HeldVertices = std::vector<char> (*)(const PolygonMesh& level, const MeshTopology& topology,
+                                          const SchemeParameters& parameters);
+
 /// Throws ParameterError when `parameters` lie outside the family's valid
 /// range (the scheme's rule file states it). `name` is the scheme's.
 using ParameterCheck = void (*)(std::string_view name, const SchemeParameters& parameters);
 
 struct Scheme;
 /// Composite schemes: the operators one level applies in turn, each an
-/// ordinary one-split scheme with its own parameters (refine.cpp).
+/// ordinary one-split scheme with its own parameters (refine.cpp): a first
+/// step that splits the level's parent, then identity steps that smooth its
+/// child, and at most one dual split of the parent that reads them.
 using StepList = std::vector<Scheme> (*)(const SchemeParameters& parameters);
 
 /// Which published a-priori depth bound covers a scheme's regular part
@@ -311,6 +326,9 @@ struct SchemeMasks {
   /// points first and face points last; the edge and vertex masks must then
   /// not weight face points.
   bool face_points_read_edge_points = false;
+  /// The vertices these masks keep in place, computed by the engine once per
+  /// level into LevelView::held; nullptr: none.
+  HeldVertices held_vertices = nullptr;
 };
 
 /// Shortcuts of the fast path (refine()), each held to the masks by tests.
@@ -345,11 +363,13 @@ struct Scheme {
   SplitRule split = SplitRule::quad;
   SchemeTraits traits = {};
   SchemeMasks masks = {};
-  /// Composite schemes (generalized Catmull-Clark, midpoint): one level is
-  /// these steps in turn, R (a quad split), smoothing steps (identity
-  /// splits) and possibly A, a dual split of the level's parent whose masks
-  /// weight the quad split's vertices; `split` is then the level's overall
-  /// split (quad, or dual when the steps end with A). nullptr otherwise.
+  /// Composite schemes (generalized Catmull-Clark, midpoint, quasi 4-8): one
+  /// level is these steps in turn: a split of the level's parent (R, a quad
+  /// split; quasi 4-8's bisection), smoothing steps (identity splits of its
+  /// child) and possibly A, a dual split of the level's parent whose masks
+  /// weight the smoothed vertices; `split` is then the level's overall
+  /// split (the first step's, or dual when the steps end with A). nullptr
+  /// otherwise.
   StepList steps = nullptr;
   /// Closed-form limit masks for the scheme's standard rules, or nullptr:
   /// limit positions then use the masks the analysis reads off the rules.

@@ -17,8 +17,9 @@
 //     scheme, e.g. B_{alpha,beta} of generalized Catmull-Clark); child
 //     vertices are numbered as the parent's (vertex points).
 //   quasi 4-8 bisection (arity sqrt 2, Velho): a binary step whose split
-//     depends on the positions; not a split_topology() rule, see
-//     subdiv/topology/bisection_split.h.
+//     depends on the parent's positions (subdiv/topology/bisection_split.h);
+//     child vertices are numbered [vertex points | split points, one per
+//     split edge].
 //   sqrt3 split (TP, arity sqrt 3, Kobbelt): a face point per triangle, the
 //     old edges flipped; boundary edges kept on odd steps and trisected on
 //     even ones; child vertices are numbered [face points | boundary points,
@@ -81,6 +82,10 @@ struct SplitMap {
   /// is face f). On trisecting steps edge_points starts the boundary points,
   /// two per edge of `boundary_edges` as in the dual split.
   std::vector<Index> point_faces;
+  /// Quasi 4-8 bisection: vertex_points is 0, and edge_points starts the
+  /// split points, one per edge of `split_edges` (edge_point() does not
+  /// apply: only these edges are split).
+  std::vector<Index> split_edges;
 
   /// The parent face of face point i (i < edge_points - face_points).
   Index point_face(Index i) const { return point_faces.empty() ? i : point_faces[static_cast<std::size_t>(i)]; }
@@ -105,6 +110,24 @@ bool dual_split_has_v_face(const MeshTopology& topology, Index v);
 /// InvalidInputError.
 std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, Index f);
 
+/// What a split reads besides the parent's topology and tags.
+struct SplitOptions {
+  /// Chaikin creasing (LevelCreasing::child_edge_sharpness: 2e + i for the
+  /// child at topology.edge_vertices(e)[i]): each half of a semi-sharp crease
+  /// gets its own child sharpness instead of the tag's minus one (a half
+  /// that is still infinitely sharp, an edge sharp for being a boundary,
+  /// keeps the tag's minus one). Empty: the tag's minus one.
+  std::span<const double> child_end_sharpness = {};
+  /// The parent's level (0 = the control mesh): the sqrt3 split alternates
+  /// its boundary treatment with it (sqrt3_step_trisects()).
+  int level = 0;
+  /// The boundary interpolation the level is refined with (the mesh's tag
+  /// or an override). Under edge-and-corner, the sqrt3 split tags the vertex
+  /// point of each boundary vertex with one face as an infinitely sharp
+  /// corner: the split gives it two faces, and it stays a corner.
+  BoundaryInterpolation boundary = BoundaryInterpolation::edge_only;
+};
+
 /// The child level's faces, tags (crease and corner sharpness decremented by
 /// one per level unless infinite, holes inherited; tags no module interprets,
 /// such as hierarchical edits, dropped) and face-varying channels
@@ -112,23 +135,12 @@ std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, 
 /// the child vertex count and zero-filled; vertex channels are not created.
 /// The parent's faces are read from `topology` only (the parent mesh gives
 /// tags and face-varying channels).
-/// `child_end_sharpness`, when given (Chaikin creasing, LevelCreasing::
-/// child_edge_sharpness: 2e + i for the child at topology.edge_vertices(e)[i]),
-/// gives each half of a semi-sharp crease its own child sharpness instead of
-/// the tag's minus one (a half that is still infinitely sharp, an edge
-/// sharp for being a boundary, keeps the tag's minus one).
+/// The quasi 4-8 bisection reads the parent's positions to choose its
+/// edges, and places the split points at their edges' midpoints.
 /// Requires every face corner to have an edge (no degenerate faces) and, for
-/// the triangle and sqrt3 splits, triangles only; throws TopologyError
-/// otherwise. `level` is the parent's level (0 = the control mesh): the sqrt3
-/// split alternates its boundary treatment with it.
+/// the triangle, sqrt3 and bisection splits, triangles only; throws
+/// TopologyError otherwise.
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
-                        PolygonMesh& child, std::span<const double> child_end_sharpness = {}, int level = 0);
-
-/// The sqrt3 split's boundary faces change with the steps: a boundary
-/// vertex with one face, a corner under edge-and-corner interpolation, has
-/// two after the next step. For that interpolation, tags the vertex point of
-/// each such parent vertex in `child_tags` as an infinitely sharp corner, so
-/// that it stays one (the engine calls it after the split).
-void sqrt3_keep_one_face_corners(const MeshTopology& parent, const SplitMap& map, Tags& child_tags);
+                        PolygonMesh& child, const SplitOptions& options = {});
 
 }  // namespace subdiv

@@ -1,4 +1,4 @@
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 
 #include <cmath>
 #include <map>

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "subdiv/analysis/configuration.h"
+#include "subdiv/refine/configuration.h"
 #include "subdiv/mesh/polygon_mesh.h"
 #include "subdiv/rules/scheme.h"
 #include "subdiv/topology/split.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "subdiv/analysis/configuration.h"
+#include "subdiv/refine/configuration.h"
 #include "subdiv/core/types.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"

@@ -1,11 +1,11 @@
-#include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/refine/subdivision_matrix.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
 
-#include "subdiv/analysis/ring_mesh.h"
+#include "subdiv/refine/ring_mesh.h"
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"

@@ -1,10 +1,10 @@
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 
 #include <tbb/parallel_for.h>
 
 #include <string>
 
-#include "../core/large_buffers.h"
+#include "large_buffers.h"
 #include "row_accumulator.h"
 #include "subdiv/core/error.h"
 

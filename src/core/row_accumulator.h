@@ -12,7 +12,7 @@
 #include <mutex>
 #include <vector>
 
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 
 namespace subdiv::detail {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "subdiv/analysis/ring_mesh.h"
-#include "subdiv/analysis/subdivision_matrix.h"
+#include "subdiv/refine/ring_mesh.h"
+#include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/validation.h"

@@ -1,4 +1,4 @@
-#include "subdiv/refine/stencil_table.h"
+#include "subdiv/core/stencil_table.h"
 
 #include <gtest/gtest.h>
 
