@@ -289,6 +289,9 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
     throw InvalidInputError(std::string(scheme.name) +
                             ": no adaptive refinement for an interpolating scheme: its vertices are on the limit "
                             "surface at every level, so their distance to it says nothing about the faces in between");
+  if (!mesh.tags.holes.empty())
+    throw InvalidInputError("face " + std::to_string(mesh.tags.holes.front()) +
+                            " is tagged as a hole, and adaptive refinement has no rule for holes (it would fill them)");
   return LeafHierarchy(mesh, scheme, eps, options).result();
 }
 

@@ -41,11 +41,48 @@ MeshFile read_mesh(const std::filesystem::path& path) {
   throw InvalidInputError(path.string() + ": unknown mesh format");
 }
 
+namespace {
+
+// `mesh` without the faces tagged as holes (and their face-varying corners);
+// the hole tags go with them.
+PolygonMesh without_hole_faces(const PolygonMesh& mesh) {
+  std::vector<char> hole(static_cast<std::size_t>(mesh.face_count()), 0);
+  for (const Index f : mesh.tags.holes)
+    if (f >= 0 && f < mesh.face_count()) hole[static_cast<std::size_t>(f)] = 1;
+  PolygonMesh out = mesh;
+  out.face_offsets = {0};
+  out.face_indices.clear();
+  out.tags.holes.clear();
+  for (FaceVaryingChannel& channel : out.face_varying_channels) channel.indices.clear();
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    if (hole[static_cast<std::size_t>(f)]) continue;
+    out.add_face(mesh.face(f));
+    for (std::size_t i = 0; i < mesh.face_varying_channels.size(); ++i) {
+      const std::vector<Index>& in = mesh.face_varying_channels[i].indices;
+      if (in.size() != mesh.face_indices.size()) continue;  // not per corner: left as the writer finds it
+      out.face_varying_channels[i].indices.insert(out.face_varying_channels[i].indices.end(),
+                                                   in.begin() + mesh.face_offsets[f], in.begin() + mesh.face_offsets[f + 1]);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::string> write_mesh(const PolygonMesh& mesh, const std::filesystem::path& path,
                                     const WriteOptions& options) {
   const FileFormat format = format_from_path(path);
   check_indices(mesh);
   std::vector<std::string> warnings;
+  if (format != FileFormat::obj && !mesh.tags.holes.empty() && !options.hole_faces_as_faces) {
+    const PolygonMesh kept = without_hole_faces(mesh);
+    const Index left_out = mesh.face_count() - kept.face_count();
+    warnings.push_back(std::string(to_string(format)) + " has no place for hole tags: " + std::to_string(left_out) +
+                       (left_out == 1 ? " hole face" : " hole faces") + " left out");
+    std::vector<std::string> rest = write_mesh(kept, path, options);
+    warnings.insert(warnings.end(), rest.begin(), rest.end());
+    return warnings;
+  }
   std::string data;
   switch (format) {
     case FileFormat::obj: data = format_obj(mesh, options, &warnings); break;

@@ -643,5 +643,31 @@ else
   echo "cli: issue 22 checks skipped: shared meshes absent ($shared)"
 fi
 
+# No silent losses: what a command cannot carry it says, or it refuses.
+run convert-invalid 0 convert "$data/nan_coordinate.obj" "$work/nan.obj" &&
+  stderr_one_line convert-invalid && stderr_has convert-invalid "nan_coordinate.obj: the mesh is not valid and is written as it is: line" &&
+  stdout_has convert-invalid "1 face"
+run convert-invalid-refused 1 convert "$data/nan_coordinate.obj" "$work/nan2.obj" --validate &&
+  stderr_one_line convert-invalid-refused
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\nt hole 1/0/0 1\n' >"$work/hole.obj"
+run convert-hole-ply 0 convert "$work/hole.obj" "$work/hole.ply" --ascii &&
+  stderr_has convert-hole-ply "1 hole face left out" && grep -q "^element face 1$" "$work/hole.ply" && pass ||
+  fail "convert-hole-ply: the hole face was written"
+run convert-hole-kept 0 convert "$work/hole.obj" "$work/hole_kept.ply" --ascii --keep-hole-faces &&
+  grep -q "^element face 2$" "$work/hole_kept.ply" && pass || fail "convert --keep-hole-faces: the hole face was left out"
+run convert-hole-obj 0 convert "$work/hole.obj" "$work/hole_copy.obj" && [ "$(grep -c '^f ' "$work/hole_copy.obj")" -eq 2 ] &&
+  pass || fail "convert-hole-obj: OBJ keeps hole faces with their tag"
+run adaptive-hole 1 adaptive "$work/hole.obj" --eps 0.01 -o "$work/x.obj" && stderr_one_line adaptive-hole &&
+  stderr_has adaptive-hole "hole.obj: face 1 is tagged as a hole"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\nt crease 2/1/0 0 1 10\n' >"$work/normals.obj"
+run refine-normals 0 refine "$work/normals.obj" -l 1 -o "$work/n1.obj" && stderr_one_line refine-normals &&
+  stderr_has refine-normals "input normals dropped" && ! grep -q '^vn ' "$work/n1.obj" && pass ||
+  fail "refine-normals: input normals carried into the refined mesh"
+run adaptive-losses 0 adaptive "$work/normals.obj" --eps 0.001 -o "$work/na.obj" &&
+  stderr_has adaptive-losses "input normals dropped" && stderr_has adaptive-losses "does not carry 1 crease tag"
+run refine-curve-ply 1 refine "$work/curves.obj" -s chaikin -o "$work/curve.ply" && stderr_one_line refine-curve-ply &&
+  stderr_has refine-curve-ply "has no place for polylines"
+[ ! -e "$work/curve.ply" ] && pass || fail "refine-curve-ply: wrote a file"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -68,6 +69,34 @@ TEST_F(MeshIoTest, TagsSurviveObjAndAreReportedLostElsewhere) {
   const auto warnings = write_mesh(mesh, dir_ / "m.off");
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("no place for tags"), std::string::npos);
+}
+
+// PLY and OFF have no hole tags: hole faces are left out (they are not part
+// of the surface), with a note, unless asked for as ordinary faces.
+TEST_F(MeshIoTest, HoleFacesLeftOutWhereTheFormatHasNoHoleTags) {
+  PolygonMesh mesh = test::cube();
+  mesh.tags.holes = {2};
+  for (const char* name : {"h.ply", "h.off"}) {
+    const auto warnings = write_mesh(mesh, dir_ / name);
+    ASSERT_FALSE(warnings.empty()) << name;
+    EXPECT_NE(warnings[0].find("1 hole face left out"), std::string::npos) << warnings[0];
+    const PolygonMesh back = read_mesh(dir_ / name).mesh;
+    ASSERT_EQ(back.face_count(), 5) << name;
+    for (Index f = 0; f < back.face_count(); ++f) {
+      const Index original = f < 2 ? f : f + 1;  // face 2 is gone, the others keep their order
+      EXPECT_TRUE(std::ranges::equal(back.face(f), mesh.face(original))) << name << ", face " << f;
+    }
+    WriteOptions keep;
+    keep.hole_faces_as_faces = true;
+    write_mesh(mesh, dir_ / name, keep);
+    EXPECT_EQ(read_mesh(dir_ / name).mesh.face_count(), 6) << name;
+  }
+  EXPECT_EQ(read_mesh([&] {
+              write_mesh(mesh, dir_ / "h.obj");
+              return dir_ / "h.obj";
+            }())
+                .mesh.face_count(),
+            6);  // OBJ keeps the faces with their tag
 }
 
 TEST_F(MeshIoTest, PolylinesSurviveObjAndAreReportedLostElsewhere) {

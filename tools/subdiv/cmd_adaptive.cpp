@@ -6,10 +6,12 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "input_mesh.h"
 #include "output_checks.h"
+#include "wording.h"
 #include "scheme_option.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/adaptive.h"
@@ -19,6 +21,27 @@
 namespace subdiv::cli {
 
 namespace {
+
+// What the input holds that the adaptive mesh does not carry, one warning
+// line listing each kind (the positions already follow the tags' rules).
+void warn_not_carried(const std::string& path, const PolygonMesh& input, const PolygonMesh& output) {
+  std::vector<std::string> kinds;
+  for (const VertexChannel& c : input.vertex_channels)
+    if (!output.find_vertex_channel(c.name)) kinds.push_back("vertex channel '" + c.name + "'");
+  for (const FaceVaryingChannel& c : input.face_varying_channels)
+    if (!output.find_face_varying_channel(c.name)) kinds.push_back("face-varying channel '" + c.name + "'");
+  if (!input.tags.creases.empty() && output.tags.creases.empty())
+    kinds.push_back(count_of(static_cast<std::int64_t>(input.tags.creases.size()), "crease tag", "crease tags"));
+  if (!input.tags.corners.empty() && output.tags.corners.empty())
+    kinds.push_back(count_of(static_cast<std::int64_t>(input.tags.corners.size()), "corner tag", "corner tags"));
+  if (kinds.empty()) return;
+  std::string list;
+  for (const std::string& k : kinds) list += (list.empty() ? "" : ", ") + k;
+  std::fprintf(stderr,
+               "subdiv: warning: %s: the adaptive mesh does not carry %s (positions follow the tags' rules; "
+               "'subdiv refine' carries them)\n",
+               path.c_str(), list.c_str());
+}
 
 struct AdaptiveCommandOptions {
   std::string input;
@@ -37,6 +60,11 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
   triangulate_if_asked(scheme, opt.triangulate, file);
+  if (!file.mesh.tags.holes.empty())
+    throw InvalidInputError(opt.input + ": face " + std::to_string(file.mesh.tags.holes.front()) +
+                            " is tagged as a hole, and adaptive refinement has no rule for holes (it would fill them); "
+                            "'subdiv refine' keeps them");
+  drop_input_normals(opt.input, file.mesh);
 
   AdaptiveOptions options;
   options.max_level = opt.max_level;
@@ -44,6 +72,7 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
   check_refinable(file.mesh, scheme, options.depth.refine, &file.lines);  // errors with the file's lines
   const AdaptiveResult result = adaptive_refine(file.mesh, scheme, opt.eps, options);
   warn_dropped_tags(opt.input, file.mesh.tags);
+  warn_not_carried(opt.input, file.mesh, result.mesh);
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;

@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "output_checks.h"
+#include "wording.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/validation.h"
@@ -22,21 +23,33 @@ struct ConvertOptions {
   bool big_endian = false;
   bool validate = false;
   bool no_tags = false;
+  bool keep_hole_faces = false;
 };
 
 int run_convert(const ConvertOptions& opt) {
   check_output_path(opt.input, opt.output);
   const MeshFile file = read_mesh(opt.input);
-  if (opt.validate) require_valid(validate(file.mesh, &file.lines), opt.input);
+  const ValidationReport report = validate(file.mesh, &file.lines);
+  if (opt.validate) require_valid(report, opt.input);
   print_warnings(opt.input, file.warnings);
+  if (!report.ok()) {
+    // A converter writes what it reads, but never silently: the first error
+    // with its line, and how many more `subdiv info` lists.
+    const std::size_t more = report.error_count() - 1;
+    std::string note = "the mesh is not valid and is written as it is: " + report.first_error();
+    if (more > 0) note += fmt::format(" (and {} more {}; subdiv info lists them)", more, more == 1 ? "error" : "errors");
+    else note += " (--validate refuses such a mesh)";
+    print_warnings(opt.input, {note});
+  }
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii
                       : opt.big_endian ? PlyEncoding::binary_big_endian : PlyEncoding::binary_little_endian;
   wopt.write_tags = !opt.no_tags;
+  wopt.hole_faces_as_faces = opt.keep_hole_faces;
   print_warnings(opt.output, write_mesh(file.mesh, opt.output, wopt));
-  std::printf("%s", fmt::format("wrote {}: {} vertices, {} faces\n", opt.output, file.mesh.vertex_count(),
-                                file.mesh.face_count()).c_str());
+  std::printf("%s", fmt::format("wrote {}: {}, {}\n", opt.output, count_of(file.mesh.vertex_count(), "vertex", "vertices"),
+                                count_of(file.mesh.face_count(), "face", "faces")).c_str());
   return kExitOk;
 }
 
@@ -49,8 +62,12 @@ Command add_convert_command(CLI::App& app) {
   cmd->add_option("output", opt->output, "Mesh to write (written to a temporary file, then renamed)")->required();
   cmd->add_flag("--ascii", opt->ascii, "PLY output in ASCII instead of binary little-endian");
   cmd->add_flag("--big-endian", opt->big_endian, "PLY output in binary big-endian");
-  cmd->add_flag("--validate", opt->validate, "Refuse to convert a mesh that fails validation");
+  cmd->add_flag("--validate", opt->validate,
+                "Refuse to convert a mesh that fails validation (without it: converted, with a warning)");
   cmd->add_flag("--no-tags", opt->no_tags, "Do not write OBJ tag lines");
+  cmd->add_flag("--keep-hole-faces", opt->keep_hole_faces,
+                "PLY and OFF: write faces tagged as holes as ordinary faces (by default they are left out, "
+                "with a warning: those formats have no hole tags)");
   cmd->footer(
       "Example:\n"
       "  subdiv convert data/meshes/cube.obj /tmp/cube.ply --ascii");

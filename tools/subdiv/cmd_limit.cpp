@@ -65,6 +65,7 @@ int run_limit(const LimitCommandOptions& opt) {
   PolygonMesh out = std::move(file.mesh);
   if (opt.levels > 0) {
     warn_dropped_tags(opt.input, out.tags);
+    drop_input_normals(opt.input, out);
     out = refine(out, *scheme, refine_options);
   }
   const LimitResult limit = limit_positions(out, *scheme, options);

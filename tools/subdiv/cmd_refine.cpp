@@ -96,6 +96,9 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
     throw InvalidInputError(std::string(option) + " applies to surface schemes, not to the curve scheme " + name);
   const CurveScheme scheme = with_tension(registered, opt.tension);
   check_output_path(opt.input, opt.output);
+  if (format_from_path(opt.output) != FileFormat::obj)
+    throw InvalidInputError(opt.output + ": " + to_string(format_from_path(opt.output)) +
+                            " has no place for polylines; write the refined curves to an .obj file");
 
   const MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
@@ -209,7 +212,10 @@ int run_refine(const RefineCommandOptions& opt) {
                                         "to the {} of {}",
                                         to_string(SplitRule::sqrt3), to_string(scheme->split), opt.scheme));
   options.start_level = opt.start_level;
-  if (options.levels > 0) warn_dropped_tags(opt.input, file.mesh.tags);
+  if (options.levels > 0) {
+    warn_dropped_tags(opt.input, file.mesh.tags);
+    drop_input_normals(opt.input, file.mesh);
+  }
   if (opt.quasi_boundary == "smoothed") std::get<Quasi48Parameters>(chosen.parameters).boundary = Quasi48Boundary::smoothed;
   options.allow_non_manifold = opt.allow_non_manifold;
   options.threads = opt.threads;

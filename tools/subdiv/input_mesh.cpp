@@ -32,4 +32,15 @@ void warn_dropped_tags(const std::string& path, const Tags& tags) {
                path.c_str(), tags.other.size(), list.c_str());
 }
 
+void drop_input_normals(const std::string& path, PolygonMesh& mesh) {
+  const auto is_normal = [](const auto& channel) { return channel.name == "normal"; };
+  const std::size_t dropped = std::erase_if(mesh.vertex_channels, is_normal) +
+                              std::erase_if(mesh.face_varying_channels, is_normal);
+  if (dropped == 0) return;
+  std::fprintf(stderr,
+               "subdiv: warning: %s: input normals dropped: refinement would interpolate them as data, not follow "
+               "the refined surface ('subdiv limit --normals' writes the limit surface's)\n",
+               path.c_str());
+}
+
 }  // namespace subdiv::cli

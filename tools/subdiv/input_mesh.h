@@ -19,4 +19,9 @@ void triangulate_if_asked(const Scheme& scheme, bool triangulate, MeshFile& file
 /// kind, e.g. "2 vertexedit, 1 edgeedit".
 void warn_dropped_tags(const std::string& path, const Tags& tags);
 
+/// Input normals (OBJ `vn`, PLY nx ny nz) would be interpolated as data by
+/// refinement, not follow the refined surface: removes them from `mesh`,
+/// with one warning line naming the file, when there are any.
+void drop_input_normals(const std::string& path, PolygonMesh& mesh);
+
 }  // namespace subdiv::cli

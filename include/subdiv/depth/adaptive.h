@@ -48,7 +48,9 @@ struct AdaptiveResult {
 /// split into 2, 3 or 4 triangles) and Catmull-Clark (a leaf met by finer
 /// neighbours is fanned from its face point: quads at corners whose two
 /// edges are split, triangles elsewhere). Any scheme in the registry works
-/// the same way by its split. Throws as refine() does.
+/// the same way by its split. Throws as refine() does, and for meshes with
+/// hole tags (no rule here keeps a hole open). The result carries positions
+/// and faces only: no channels and no tags.
 AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
                                const AdaptiveOptions& options = {});
 

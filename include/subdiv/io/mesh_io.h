@@ -39,11 +39,16 @@ struct WriteOptions {
   PlyEncoding ply_encoding = PlyEncoding::binary_little_endian;
   bool write_tags = true;      ///< OBJ tag lines
   bool write_channels = true;  ///< UVs, normals, colours where the format has a place for them
+  /// PLY and OFF have no place for hole tags: faces tagged as holes are left
+  /// out (they are not part of the surface), with a note, unless this asks
+  /// to write them as ordinary faces. OBJ keeps them, with their tags.
+  bool hole_faces_as_faces = false;
 };
 
 /// Writes a mesh to a temporary file next to `path` and renames it into
 /// place, so a failure never leaves a truncated file. Returns notes about
-/// data the format cannot hold (dropped channels or tags).
+/// data the format cannot hold (dropped channels, tags, hole faces,
+/// polylines).
 std::vector<std::string> write_mesh(const PolygonMesh& mesh, const std::filesystem::path& path,
                                     const WriteOptions& options = {});
 
