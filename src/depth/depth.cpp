@@ -350,40 +350,87 @@ std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme
       }
     }
   }
+  // Sqrt3 split: the boundary edges of the current level.
+  std::int64_t sqrt3_boundary_edges = 0;
+  if (scheme.split == SplitRule::sqrt3)
+    for (Index e = 0; e < t.edge_count(); ++e) sqrt3_boundary_edges += t.is_boundary_edge(e) ? 1 : 0;
   std::vector<LevelCost> out;
   for (int level = 0; level <= levels; ++level) {
     cost.level = level;
     cost.bytes = 24 * cost.vertices + 4 * (cost.corners + cost.faces + 1);
     out.push_back(cost);
     LevelCost next = cost;
-    if (scheme.split == SplitRule::quad) {
-      // A face of c corners becomes c quads around its face point; an edge
-      // becomes two plus one per face side (face point to edge point).
-      next.vertices = cost.vertices + cost.edges + cost.faces;
-      next.faces = cost.corners;
-      next.edges = 2 * cost.edges + cost.corners;
-      next.corners = 4 * cost.corners;
-    } else if (scheme.split == SplitRule::dual) {
-      // A child vertex per corner and two per boundary edge; a child face
-      // per face (its corners), per edge (4 corners) and per vertex with one
-      // (its faces' corners, 2 more on a boundary: src/topology/dual_split.cpp).
-      // The child's boundary: two edges per boundary edge and per boundary
-      // vertex; from level 1 every vertex has a V-face.
-      next.vertices = cost.corners + 2 * boundary_edges;
-      next.faces = cost.faces + cost.edges + v_faces;
-      next.corners = cost.corners + 4 * cost.edges + v_face_corners;
-      next.edges = (next.corners + boundary_edges + boundary_vertices) / 2;
-      const std::int64_t child_boundary_edges = boundary_edges + boundary_vertices;
-      boundary_vertices = 2 * boundary_edges;
-      boundary_edges = child_boundary_edges;
-      v_faces = next.vertices;
-      v_face_corners = next.corners + 2 * boundary_vertices;
-    } else {
-      // A triangle becomes four; an edge two, plus three inside each face.
-      next.vertices = cost.vertices + cost.edges;
-      next.faces = 4 * cost.faces;
-      next.edges = 2 * cost.edges + 3 * cost.faces;
-      next.corners = 12 * cost.faces;
+    switch (scheme.split) {
+      case SplitRule::quad:
+        // A face of c corners becomes c quads around its face point; an edge
+        // becomes two plus one per face side (face point to edge point).
+        next.vertices = cost.vertices + cost.edges + cost.faces;
+        next.faces = cost.corners;
+        next.edges = 2 * cost.edges + cost.corners;
+        next.corners = 4 * cost.corners;
+        break;
+      case SplitRule::dual: {
+        // A child vertex per corner and two per boundary edge; a child face
+        // per face (its corners), per edge (4 corners) and per vertex with one
+        // (its faces' corners, 2 more on a boundary: src/topology/dual_split.cpp).
+        // The child's boundary: two edges per boundary edge and per boundary
+        // vertex; from level 1 every vertex has a V-face.
+        next.vertices = cost.corners + 2 * boundary_edges;
+        next.faces = cost.faces + cost.edges + v_faces;
+        next.corners = cost.corners + 4 * cost.edges + v_face_corners;
+        next.edges = (next.corners + boundary_edges + boundary_vertices) / 2;
+        const std::int64_t child_boundary_edges = boundary_edges + boundary_vertices;
+        boundary_vertices = 2 * boundary_edges;
+        boundary_edges = child_boundary_edges;
+        v_faces = next.vertices;
+        v_face_corners = next.corners + 2 * boundary_vertices;
+        break;
+      }
+      case SplitRule::sqrt3: {
+        // Two triangles per interior edge, one per boundary edge; a face point
+        // per face, and on trisecting steps two boundary points per boundary
+        // edge (whose faces then have no face point: counted anyway), which
+        // triple the boundary edges (counted on every step): exact on closed
+        // meshes, at most this with a boundary.
+        next.vertices = cost.vertices + cost.faces + 2 * sqrt3_boundary_edges;
+        next.faces = 2 * cost.edges - sqrt3_boundary_edges;
+        next.corners = 3 * next.faces;
+        sqrt3_boundary_edges *= 3;
+        next.edges = (next.corners + sqrt3_boundary_edges) / 2;
+        break;
+      }
+      case SplitRule::sqrt2:
+        // A quad per edge around its face points and ends; an edge per corner.
+        next.vertices = cost.vertices + cost.faces;
+        next.faces = cost.edges;
+        next.corners = 4 * cost.edges;
+        next.edges = cost.corners;
+        break;
+      case SplitRule::midedge:
+        // A vertex per edge; a face per face and per vertex (closed meshes);
+        // an edge per corner, joining the points of the corner's two edges.
+        next.vertices = cost.edges;
+        next.faces = cost.faces + cost.vertices;
+        next.corners = 2 * cost.corners;
+        next.edges = cost.corners;
+        break;
+      case SplitRule::identity:
+        break;
+      case SplitRule::quasi_4_8:
+        // Geometric: at most every edge split and every triangle bisected
+        // (Algorithm 1 splits at most one edge per face): an upper bound.
+        next.vertices = cost.vertices + cost.edges;
+        next.faces = 2 * cost.faces;
+        next.corners = 3 * next.faces;
+        next.edges = cost.edges + cost.edges + cost.faces;
+        break;
+      case SplitRule::triangle:
+        // A triangle becomes four; an edge two, plus three inside each face.
+        next.vertices = cost.vertices + cost.edges;
+        next.faces = 4 * cost.faces;
+        next.edges = 2 * cost.edges + 3 * cost.faces;
+        next.corners = 12 * cost.faces;
+        break;
     }
     cost = next;
   }

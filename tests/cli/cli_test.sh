@@ -669,5 +669,11 @@ run refine-curve-ply 1 refine "$work/curves.obj" -s chaikin -o "$work/curve.ply"
   stderr_has refine-curve-ply "has no place for polylines"
 [ ! -e "$work/curve.ply" ] && pass || fail "refine-curve-ply: wrote a file"
 
+# Work that cannot fit is refused before it starts, with the estimate.
+run refine-memory 1 refine "$meshes/spot_control_mesh.obj" -l 12 -o "$work/huge.obj" && stderr_one_line refine-memory &&
+  stderr_has refine-memory "refine to level 12 needs about" && stderr_has refine-memory "--no-memory-check"
+[ ! -e "$work/huge.obj" ] && pass || fail "refine-memory: wrote a file"
+run limit-memory 1 limit "$meshes/spot_control_mesh.obj" -l 12 -o "$work/huge.obj" && stderr_one_line limit-memory
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -15,7 +15,9 @@
 #include "subdiv/depth/depth.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/io/mesh_io.h"
+#include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/triangulate.h"
+#include "subdiv/refine/hierarchy.h"
 #include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/loop.h"
 #include "subdiv/rules/scheme.h"
@@ -157,6 +159,50 @@ TEST(DepthCost, CountsMatchRefinement) {
       EXPECT_EQ(cost.faces, level.face_count()) << scheme_name << " level " << cost.level;
       EXPECT_EQ(cost.corners, level.corner_count()) << scheme_name << " level " << cost.level;
       level = refine(level, scheme);
+    }
+  }
+}
+
+// The splits without a depth bound are counted too (the commands' memory
+// guard reads the counts): exact on closed meshes, and for the sqrt3
+// split's boundaries and quasi 4-8's bisection an upper bound.
+TEST(DepthCost, EverySplitCountedOrBounded) {
+  const PolygonMesh closed = triangulate(test::jittered(test::cube(), 5));
+  const PolygonMesh open = test::jittered(test::triangle_grid(3, 3), 5);
+  const PolygonMesh quads = test::jittered(test::cube(), 5);
+  Scheme sqrt2 = *find_scheme("four-eight");
+  sqrt2.fast_path = {};  // one sqrt2 step per level
+  struct Case {
+    const Scheme* scheme;
+    const PolygonMesh* mesh;
+    bool exact;
+  };
+  const std::vector<Case> cases = {{find_scheme("sqrt3"), &closed, true},  {find_scheme("sqrt3"), &open, false},
+                                   {&sqrt2, &quads, true},                  {find_scheme("midedge"), &closed, true},
+                                   {find_scheme("quasi-4-8"), &closed, false}, {find_scheme("quasi-4-8"), &open, false},
+                                   {find_scheme("gcc"), &closed, true}};
+  for (const Case& c : cases) {
+    const std::vector<LevelCost> costs = level_costs(*c.mesh, *c.scheme, 3);
+    const Hierarchy h = refine_hierarchy(*c.mesh, *c.scheme, [] {
+      RefineOptions o;
+      o.levels = 3;
+      return o;
+    }());
+    for (std::size_t l = 0; l < costs.size(); ++l) {
+      const PolygonMesh& level = h.levels[l].mesh;
+      const std::string what = std::string(c.scheme->name) + (c.exact ? " (exact)" : " (bound)") + ", level " +
+                               std::to_string(l);
+      if (c.exact) {
+        EXPECT_EQ(costs[l].vertices, level.vertex_count()) << what;
+        EXPECT_EQ(costs[l].faces, level.face_count()) << what;
+        EXPECT_EQ(costs[l].corners, level.corner_count()) << what;
+        EXPECT_EQ(costs[l].edges, MeshTopology(level).edge_count()) << what;
+      } else {
+        EXPECT_GE(costs[l].vertices, level.vertex_count()) << what;
+        EXPECT_GE(costs[l].faces, level.face_count()) << what;
+        EXPECT_GE(costs[l].corners, level.corner_count()) << what;
+        EXPECT_GE(costs[l].edges, MeshTopology(level).edge_count()) << what;
+      }
     }
   }
 }

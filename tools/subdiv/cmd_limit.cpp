@@ -11,6 +11,7 @@
 
 #include "commands.h"
 #include "input_mesh.h"
+#include "memory_guard.h"
 #include "output_checks.h"
 #include "rule_options.h"
 #include "scheme_option.h"
@@ -36,6 +37,7 @@ struct LimitCommandOptions {
   bool allow_non_manifold = false;
   bool triangulate = false;
   bool ascii = false;
+  bool no_memory_check = false;
   RuleOptionValues rules;
 };
 
@@ -61,6 +63,7 @@ int run_limit(const LimitCommandOptions& opt) {
   RefineOptions refine_options = options.refine;
   refine_options.levels = opt.levels;
   check_refinable(file.mesh, *scheme, refine_options, &file.lines);
+  check_fits_in_memory(file.mesh, *scheme, opt.levels, opt.no_memory_check, "limit -l");
   // The mesh whose vertices are written: the input, or its refinement.
   PolygonMesh out = std::move(file.mesh);
   if (opt.levels > 0) {
@@ -171,6 +174,8 @@ Command add_limit_command(CLI::App& app) {
   cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
   add_rule_options(*cmd, opt->rules);
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
+  cmd->add_flag("--no-memory-check", opt->no_memory_check,
+                "Refine -l levels even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(
       "Catmull-Clark and Loop use closed-form masks (refining only to resolve non-quads\n"
       "and semi-sharp features); every other scheme, or --masks generic, uses the left\n"

@@ -14,6 +14,7 @@
 
 #include "commands.h"
 #include "input_mesh.h"
+#include "memory_guard.h"
 #include "output_checks.h"
 #include "rule_options.h"
 #include "scheme_option.h"
@@ -40,6 +41,7 @@ struct RefineCommandOptions {
   bool triangulate = false;
   bool ascii = false;
   bool quiet = false;
+  bool no_memory_check = false;
   std::optional<double> tension;
   RuleOptionValues rules;
   DegreeOptionValues degree;
@@ -238,6 +240,8 @@ int run_refine(const RefineCommandOptions& opt) {
     if (!opt.quiet && std::chrono::duration<double>(now - start).count() > 1.0)
       std::fprintf(stderr, "subdiv: %s\n", line.c_str());
   };
+  check_refinable(file.mesh, *scheme, options, &file.lines);  // bad input first, then its size
+  check_fits_in_memory(file.mesh, *scheme, options.levels, opt.no_memory_check, "refine");
   const PolygonMesh result = refine(file.mesh, *scheme, options, &file.lines);
 
   WriteOptions wopt;
@@ -315,6 +319,8 @@ Command add_refine_command(CLI::App& app) {
       ->check(CLI::IsMember({"fixed", "smoothed"}));
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
   cmd->add_flag("-q,--quiet", opt->quiet, "No progress lines on stderr");
+  cmd->add_flag("--no-memory-check", opt->no_memory_check,
+                "Refine even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(
       "Vertex data (colours, any per-vertex channel) is refined with the scheme's\n"
       "masks; face-varying data (UVs) linearly within faces. Curve schemes\n"

@@ -40,7 +40,10 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
 bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& options = {});
 
 /// Size of the mesh after `level` uniform steps, counted from the control
-/// mesh's topology alone (nothing is refined).
+/// mesh's topology alone (nothing is refined): exact for the quad, triangle
+/// and dual splits, and for the sqrt3, sqrt2 and midedge splits on closed
+/// meshes; an upper bound for the sqrt3 split's boundaries and for quasi
+/// 4-8's geometric bisection.
 struct LevelCost {
   int level = 0;
   std::int64_t vertices = 0;
