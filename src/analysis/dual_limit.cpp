@@ -1,5 +1,5 @@
 // Doo-Sabin (dual split) limit positions: the limit of each vertex's V-face
-// (src/analysis/dual_limit.h; docs/design.md, "Depth").
+// (src/analysis/dual_limit.h; docs/depth.md, "Doo-Sabin").
 
 #include "analysis/dual_limit.h"
 

@@ -1,4 +1,4 @@
-// Adaptive refinement over the uniform face hierarchy (docs/design.md,
+// Adaptive refinement over the uniform face hierarchy (docs/depth.md,
 // "Adaptive refinement"). Levels are refined uniformly (the paper's adaptive
 // scheme saves faces, not computation: it measures distances at every
 // level), then a set of leaf faces is chosen and joined without cracks.

@@ -1,5 +1,5 @@
 // Which bound each scheme gets, and the rates the analysis gives where the
-// paper has none (docs/design.md, "Depth").
+// paper has none (docs/depth.md).
 
 #include "subdiv/depth/depth.h"
 
@@ -86,8 +86,8 @@ struct WorstRate {
 };
 
 // Where the bound starts: the control mesh, or its refinement `start` steps
-// down, whose vertex points are numbered last (docs/design.md,
-// "Refinement"), so control vertex v is vertex (count - control count) + v.
+// down, whose vertex points are numbered last (docs/refinement.md,
+// "Splits"), so control vertex v is vertex (count - control count) + v.
 struct StartLevel {
   const PolygonMesh& mesh;
   Index control_vertices = 0;
@@ -150,7 +150,7 @@ int max_valence(const PolygonMesh& mesh) {
   return worst;
 }
 
-// Doo-Sabin (docs/design.md, "Depth"): the paper's Theorem 5 from the level
+// Doo-Sabin (docs/depth.md, "Doo-Sabin"): the paper's Theorem 5 from the level
 // at which every extraordinary face (!= 4 sides) has the canonical two-ring
 // neighbourhood, plus a term for those faces from powers of their local
 // subdivision matrix (depth/dual_face_bound.h).
@@ -247,7 +247,7 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
     bound.source = "paper (regular) + local subdivision matrix (extraordinary)";
     // Near the faces the regular term's second differences are bounded by
     // the faces' own term, so the two together hold everywhere from `start`
-    // on (docs/design.md, "Depth").
+    // on (docs/depth.md, "Doo-Sabin").
     bound.terms.push_back({"largest distance or second difference / 4 that the local subdivision matrix gives any "
                            "later step near the extraordinary faces after " + std::to_string(start) +
                                " steps, over |lambda_1|^steps (worst at a face of " + std::to_string(worst) +
@@ -307,7 +307,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   // vertex point, never a new edge point). Near an extraordinary vertex the
   // distances of the new vertices decay like |lambda_1| there, slower than
   // the paper's rate: measured, the paper's Loop bound fails on meshes with
-  // valence 8 or 32 (docs/design.md, "Depth"). That term is added.
+  // valence 8 or 32 (docs/depth.md, "Extraordinary vertices"). That term is added.
   const PaperDepthBound paper = scheme.traits.paper_depth_bound;
   if (paper == PaperDepthBound::loop_theorem_3 || paper == PaperDepthBound::cheng_catmull_clark) {
     DepthBound bound = paper == PaperDepthBound::loop_theorem_3

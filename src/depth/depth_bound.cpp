@@ -1,5 +1,5 @@
 // The paper's bounds, with the formulas re-derived where the extracted text
-// is garbled (docs/design.md, "Depth", has the derivations).
+// is garbled (docs/depth.md has the derivations).
 
 #include "subdiv/depth/depth_bound.h"
 

@@ -1,7 +1,7 @@
 // The Doo-Sabin bound at extraordinary faces: the face's local operator,
 // finding its neighbourhood in a mesh, and the amplitude that powers of the
 // local subdivision matrix give (src/depth/dual_face_bound.h;
-// docs/design.md, "Depth").
+// docs/depth.md, "Doo-Sabin").
 
 #include "depth/dual_face_bound.h"
 

@@ -4,7 +4,7 @@
 // neighbourhood is followed through all further steps with the local
 // subdivision matrix, and the supremum over steps of the distances (and
 // second differences) it yields, scaled by |lambda_1|^-steps, is the
-// amplitude of the face's term (docs/design.md, "Depth").
+// amplitude of the face's term (docs/depth.md, "Doo-Sabin").
 
 #include <array>
 #include <optional>

@@ -675,5 +675,18 @@ run refine-memory 1 refine "$meshes/spot_control_mesh.obj" -l 12 -o "$work/huge.
 [ ! -e "$work/huge.obj" ] && pass || fail "refine-memory: wrote a file"
 run limit-memory 1 limit "$meshes/spot_control_mesh.obj" -l 12 -o "$work/huge.obj" && stderr_one_line limit-memory
 
+# One program: typos get suggestions, ranges their syntax, -q silences all but errors.
+run typo-scheme 1 refine "$meshes/cube.obj" -s catmul-clark -o "$work/x.obj" && stderr_one_line typo-scheme &&
+  stderr_has typo-scheme "did you mean 'catmull-clark'?"
+run typo-command 1 refne "$meshes/cube.obj" && stderr_one_line typo-command && stderr_has typo-command "did you mean 'refine'?"
+run k-dash 1 analyze -s loop -k 3-8 && stderr_one_line k-dash && stderr_has k-dash "a range is written 3..8"
+run eps-inf 1 depth "$meshes/cube.obj" --eps inf && stderr_one_line eps-inf && stderr_has eps-inf "not inf" &&
+  stderr_has eps-inf "finite"
+run quiet-refine 0 refine "$work/normals.obj" -l 1 -o "$work/nq.obj" -q && [ ! -s "$work/err" ] && pass ||
+  fail "refine -q: printed on stderr: $(cat "$work/err")"
+run quiet-first 0 -q convert "$data/nan_coordinate.obj" "$work/nanq.obj" && [ ! -s "$work/err" ] && pass ||
+  fail "-q convert: printed on stderr: $(cat "$work/err")"
+run quiet-limit 0 limit "$meshes/cube.obj" -o "$work/lq.obj" -q
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

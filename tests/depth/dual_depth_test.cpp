@@ -1,5 +1,5 @@
 // Doo-Sabin limit positions (the limit of each vertex's V-face) and the
-// Doo-Sabin depth bound built on them (docs/design.md, "Depth").
+// Doo-Sabin depth bound built on them (docs/depth.md, "Doo-Sabin").
 
 #include <gtest/gtest.h>
 

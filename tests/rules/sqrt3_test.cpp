@@ -207,7 +207,7 @@ TEST(Sqrt3, AffineInvariance) {
 
 // The analysis over two steps (period 2): the one-ring is invariant, and
 // the spectrum is the closed form of the two-step matrix (derived in
-// docs/design.md): 1, (2 + 2 cos(2 pi j / k)) / 9 for j = 1 .. k - 1, and
+// docs/schemes/sqrt3.md): 1, (2 + 2 cos(2 pi j / k)) / 9 for j = 1 .. k - 1, and
 // (2/3 - alpha_k)^2, which Kobbelt's alpha makes lambda_1^2. Regular: 1/3
 // (edges shrink by sqrt 3 per step). C1 at every valence.
 TEST(Sqrt3, AnalysisIsC1AtEveryValence) {

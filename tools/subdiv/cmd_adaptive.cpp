@@ -37,7 +37,7 @@ void warn_not_carried(const std::string& path, const PolygonMesh& input, const P
   if (kinds.empty()) return;
   std::string list;
   for (const std::string& k : kinds) list += (list.empty() ? "" : ", ") + k;
-  std::fprintf(stderr,
+  warnf(
                "subdiv: warning: %s: the adaptive mesh does not carry %s (positions follow the tags' rules; "
                "'subdiv refine' carries them)\n",
                path.c_str(), list.c_str());

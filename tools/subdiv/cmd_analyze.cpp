@@ -73,6 +73,8 @@ void check_k(int k, const Configuration& c, const std::string& what) {
 std::pair<int, int> parse_k_range(const std::string& text, const Configuration& c) {
   const std::string what = "-k " + text;
   const auto dots = text.find("..");
+  if (const auto dash = text.find('-', 1); dots == std::string::npos && dash != std::string::npos)
+    throw InvalidInputError(fmt::format("{}: a range is written {}..{}", what, text.substr(0, dash), text.substr(dash + 1)));
   const int a = parse_int(text.substr(0, dots), what);
   const int b = dots == std::string::npos ? a : parse_int(text.substr(dots + 2), what);
   if (a > b) throw InvalidInputError(fmt::format("{}: empty range ({} > {})", what, a, b));

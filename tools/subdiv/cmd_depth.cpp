@@ -11,12 +11,12 @@
 
 #include "commands.h"
 #include "input_mesh.h"
+#include "output_checks.h"
 #include "scheme_option.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/depth.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/refine/refine.h"
-#include "output_checks.h"
 
 namespace subdiv::cli {
 
@@ -98,7 +98,7 @@ int run_depth(const DepthCommandOptions& opt) {
                   check.measured_previous <= opt.eps ? "would already have been enough (the bound is not tight)"
                                                      : "would not have been enough (the bound is tight)");
     if (check.approximated > 0)
-      std::fprintf(stderr, "subdiv: warning: %d vertices match no canonical configuration: their limit is approximated\n",
+      warnf("subdiv: warning: %d vertices match no canonical configuration: their limit is approximated\n",
                    check.approximated);
     if (check.measured > opt.eps) return kExitInternal;
   }

@@ -89,13 +89,13 @@ int run_limit(const LimitCommandOptions& opt) {
   if (limit.semi_sharp > 0) {
     const int more = static_cast<int>(std::ceil(limit.sharpness_left));
     if (generic)
-      std::fprintf(stderr,
+      warnf(
                    "subdiv: warning: %d vertices are at or next to semi-sharp features still unresolved after %d "
                    "levels (sharpness up to %g left: --isolation-levels %d resolves them): written at their position "
                    "there, not at the limit\n",
                    limit.semi_sharp, limit.levels_refined, limit.sharpness_left, limit.levels_refined + more);
     else
-      std::fprintf(stderr,
+      warnf(
                    "subdiv: warning: %d vertices are at or next to semi-sharp features still unresolved after %d "
                    "levels (sharpness up to %g left), as far as the closed-form masks refine (the next level would "
                    "pass %lld faces): written at their position there, not at the limit\n",
@@ -104,14 +104,14 @@ int run_limit(const LimitCommandOptions& opt) {
   }
   if (const Index other = limit.approximated - limit.semi_sharp; other > 0) {
     if (generic)
-      std::fprintf(stderr,
+      warnf(
                    "subdiv: warning: %d vertices match no canonical configuration (darts, non-manifold vertices, "
                    "interior creases between single faces, interior vertices of two triangles, or another "
                    "extraordinary vertex within the masks' neighbourhood, which more --isolation-levels separate): "
                    "written at their position after %d levels, not at the limit\n",
                    other, limit.levels_refined);
     else
-      std::fprintf(stderr,
+      warnf(
                    "subdiv: warning: %d vertices have no closed form and match no canonical configuration "
                    "(non-manifold or inconsistently oriented neighbourhoods): written at their position after %d "
                    "levels, not at the limit\n",
@@ -121,7 +121,7 @@ int run_limit(const LimitCommandOptions& opt) {
     const auto undefined = std::count_if(limit.normals.begin(), limit.normals.end(),
                                          [](const Vec3& n) { return !(norm(n) > 0.0); });
     if (undefined > 0)
-      std::fprintf(stderr,
+      warnf(
                    "subdiv: warning: %ld vertices have no limit normal (no tangent plane there, or no tangent "
                    "masks for their configuration): written as vn 0 0 0\n",
                    static_cast<long>(undefined));

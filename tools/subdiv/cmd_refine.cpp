@@ -40,7 +40,6 @@ struct RefineCommandOptions {
   bool allow_non_manifold = false;
   bool triangulate = false;
   bool ascii = false;
-  bool quiet = false;
   bool no_memory_check = false;
   std::optional<double> tension;
   RuleOptionValues rules;
@@ -111,7 +110,7 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
   if (mesh.polylines.empty())
     throw InvalidInputError(opt.input + ": no polylines ('l' lines) for the curve scheme " + name + " to refine");
   if (!mesh.vertex_channels.empty() || !mesh.tags.empty())
-    std::fprintf(stderr, "subdiv: warning: %s: vertex channels and tags are not carried through curve refinement\n",
+    warnf("subdiv: warning: %s: vertex channels and tags are not carried through curve refinement\n",
                  opt.input.c_str());
 
   const auto start = std::chrono::steady_clock::now();
@@ -171,7 +170,7 @@ void warn_if_level_matters(const Scheme& scheme, const PolygonMesh& input, const
   bool open = false;
   for (Index e = 0; e < topology.edge_count() && !open; ++e) open = topology.is_boundary_edge(e);
   if (!open) return;
-  std::fprintf(stderr,
+  warnf(
                "subdiv: warning: %s is at level %d of %s, whose boundary rule alternates with the level: refine it "
                "further with --start-level %d to continue the same surface\n",
                output.c_str(), level, std::string(scheme.name).c_str(), level);
@@ -181,8 +180,7 @@ int run_refine(const RefineCommandOptions& opt) {
   const Scheme* registered = find_scheme(opt.scheme);
   if (!registered) {
     if (const CurveScheme* curve = find_curve_scheme(opt.scheme)) return run_curve_refine(*curve, opt);
-    throw InvalidInputError("unknown scheme '" + opt.scheme + "' (known: " + surface_scheme_names() +
-                            "; curve schemes: " + curve_scheme_names() + ")");
+    throw_unknown_scheme(opt.scheme, true);
   }
   Scheme chosen = with_degree_options(with_tension(*registered, opt.tension), opt.degree);
   const Scheme* scheme = &chosen;
@@ -195,7 +193,7 @@ int run_refine(const RefineCommandOptions& opt) {
       throw InvalidInputError(opt.input + ": no faces for the surface scheme " + opt.scheme + " to refine; its " +
                               std::to_string(file.mesh.polylines.size()) + " polylines need a curve scheme (" +
                               curve_scheme_names() + ")");
-    std::fprintf(stderr, "subdiv: warning: %s: %zu polylines are not refined by a surface scheme: not written\n",
+    warnf("subdiv: warning: %s: %zu polylines are not refined by a surface scheme: not written\n",
                  opt.input.c_str(), file.mesh.polylines.size());
   }
   triangulate_if_asked(*scheme, opt.triangulate, file);
@@ -237,8 +235,7 @@ int run_refine(const RefineCommandOptions& opt) {
                                          mesh.face_count(), seconds);
     stats.push_back(line);
     // Progress for long runs only, so that quick runs stay quiet.
-    if (!opt.quiet && std::chrono::duration<double>(now - start).count() > 1.0)
-      std::fprintf(stderr, "subdiv: %s\n", line.c_str());
+    if (std::chrono::duration<double>(now - start).count() > 1.0) warnf("subdiv: %s\n", line.c_str());
   };
   check_refinable(file.mesh, *scheme, options, &file.lines);  // bad input first, then its size
   check_fits_in_memory(file.mesh, *scheme, options.levels, opt.no_memory_check, "refine");
@@ -318,7 +315,6 @@ Command add_refine_command(CLI::App& app) {
                   "quasi-4-8: boundary vertices fixed (default) or the boundary polygon smoothed")
       ->check(CLI::IsMember({"fixed", "smoothed"}));
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
-  cmd->add_flag("-q,--quiet", opt->quiet, "No progress lines on stderr");
   cmd->add_flag("--no-memory-check", opt->no_memory_check,
                 "Refine even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(

@@ -2,6 +2,7 @@
 // The subcommands of the `subdiv` program. Each registers its options on the
 // CLI11 app and returns the function that runs it (returning the exit code).
 
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <string>
@@ -24,8 +25,8 @@ inline CLI::Validator positive_number() {
       [](std::string& text) -> std::string {
         double value = 0.0;
         if (!CLI::detail::lexical_cast(text, value)) return "not a number: " + text;
-        if (!(value > 0.0) || value == std::numeric_limits<double>::infinity())
-          return "must be a positive number, not " + text;
+        if (!std::isfinite(value)) return "must be a finite number, not " + text;
+        if (!(value > 0.0)) return "must be a positive number, not " + text;
         return {};
       },
       "POSITIVE");

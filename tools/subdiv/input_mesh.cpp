@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "output_checks.h"
 #include "subdiv/mesh/triangulate.h"
 
 namespace subdiv::cli {
@@ -26,7 +27,7 @@ void warn_dropped_tags(const std::string& path, const Tags& tags) {
   }
   std::string list;
   for (const auto& [name, count] : kinds) list += (list.empty() ? "" : ", ") + std::to_string(count) + " " + name;
-  std::fprintf(stderr,
+  warnf(
                "subdiv: warning: %s: %zu tags not interpreted dropped from the refined mesh (%s): their indices name "
                "the input's faces and vertices\n",
                path.c_str(), tags.other.size(), list.c_str());
@@ -37,7 +38,7 @@ void drop_input_normals(const std::string& path, PolygonMesh& mesh) {
   const std::size_t dropped = std::erase_if(mesh.vertex_channels, is_normal) +
                               std::erase_if(mesh.face_varying_channels, is_normal);
   if (dropped == 0) return;
-  std::fprintf(stderr,
+  warnf(
                "subdiv: warning: %s: input normals dropped: refinement would interpolate them as data, not follow "
                "the refined surface ('subdiv limit --normals' writes the limit surface's)\n",
                path.c_str());

@@ -5,11 +5,15 @@
 #include <cstdio>
 #include <new>
 #include <string>
+#include <vector>
+#include <algorithm>
 
 #include <CLI/CLI.hpp>
 
 #include "cli_terms.h"
 #include "commands.h"
+#include "output_checks.h"
+#include "wording.h"
 #include "subdiv/core/error.h"
 
 namespace {
@@ -30,6 +34,9 @@ int main(int argc, char** argv) {
   CLI::App app{"subdiv: subdivision surfaces on polygon meshes", "subdiv"};
   app.set_version_flag("--version", std::string("subdiv 0.1.0"));
   app.require_subcommand(1);
+  bool quiet_flag = false;
+  app.add_flag("-q,--quiet", quiet_flag, "Print errors only: no warnings, no progress lines (any command)");
+  app.fallthrough();  // -q after the command's own options too
   app.footer(
       "Examples:\n"
       "  subdiv info data/meshes/cube.obj\n"
@@ -48,6 +55,19 @@ int main(int argc, char** argv) {
   const Command depth = add_depth_command(app);
   const Command adaptive = add_adaptive_command(app);
 
+  // A first word that names no command: say which one was meant.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    const std::string typed = argv[1];
+    if (std::find(names.begin(), names.end(), typed) == names.end()) {
+      const std::string guess = closest_name(typed, names);
+      print_error("unknown command '" + typed + "'" + (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
+                  " (run 'subdiv --help' for the commands)");
+      return kExitBadInput;
+    }
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -61,6 +81,7 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
 
+  set_quiet(quiet_flag);
   try {
     if (app.got_subcommand("info")) return info();
     if (app.got_subcommand("convert")) return convert();

@@ -1,5 +1,6 @@
 #include "output_checks.h"
 
+#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 
@@ -15,8 +16,23 @@ void check_output_path(const std::string& input, const std::string& output) {
     throw InvalidInputError(output + ": output is the input file; choose another name (inputs are never modified)");
 }
 
+namespace {
+bool quiet_ = false;
+}  // namespace
+
+void set_quiet(bool quiet) { quiet_ = quiet; }
+bool quiet() { return quiet_; }
+
+void warnf(const char* format, ...) {
+  if (quiet_) return;
+  std::va_list args;
+  va_start(args, format);
+  std::vfprintf(stderr, format, args);
+  va_end(args);
+}
+
 void print_warnings(const std::string& path, const std::vector<std::string>& warnings) {
-  for (const auto& w : warnings) std::fprintf(stderr, "subdiv: warning: %s: %s\n", path.c_str(), w.c_str());
+  for (const auto& w : warnings) warnf("subdiv: warning: %s: %s\n", path.c_str(), w.c_str());
 }
 
 }  // namespace subdiv::cli

@@ -1,5 +1,7 @@
 #include "scheme_option.h"
 
+#include "wording.h"
+
 #include <charconv>
 #include <cmath>
 
@@ -40,9 +42,20 @@ bool has_degree(const Scheme& s) { return degree_parameters(s.parameters) != nul
 
 }  // namespace
 
+void throw_unknown_scheme(const std::string& name, bool curves_too) {
+  std::vector<std::string> names;
+  for (const Scheme* s : all_schemes()) names.emplace_back(s->name);
+  if (curves_too)
+    for (const CurveScheme* s : all_curve_schemes()) names.emplace_back(s->name);
+  const std::string guess = closest_name(name, names);
+  throw InvalidInputError("unknown scheme '" + name + "' (known: " + surface_scheme_names() +
+                          (curves_too ? "; curve schemes: " + curve_scheme_names() : std::string()) + ")" +
+                          (guess.empty() ? std::string() : "; did you mean '" + guess + "'?"));
+}
+
 const Scheme& scheme_named(const std::string& name) {
   if (const Scheme* scheme = find_scheme(name)) return *scheme;
-  throw InvalidInputError("unknown scheme '" + name + "' (known: " + surface_scheme_names() + ")");
+  throw_unknown_scheme(name, false);
 }
 
 Scheme with_tension(const Scheme& scheme, std::optional<double> tension) {

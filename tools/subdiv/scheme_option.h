@@ -15,6 +15,10 @@ namespace subdiv::cli {
 
 /// The registered surface schemes' names, comma-separated.
 std::string surface_scheme_names();
+
+/// Throws InvalidInputError for a scheme name no registry knows: the known
+/// names (the curve schemes' too where `curves_too`), and the closest one.
+[[noreturn]] void throw_unknown_scheme(const std::string& name, bool curves_too);
 /// The curve schemes' names, comma-separated.
 std::string curve_scheme_names();
 

@@ -2,7 +2,7 @@
 // Adaptive refinement to an accuracy: refine only where control vertices are
 // further than eps from their limit positions, and join the levels without
 // cracks ("A priori computation of the subdivision depth", section 3.1,
-// static and mobile vertices; docs/design.md, "Adaptive refinement").
+// static and mobile vertices; docs/depth.md, "Adaptive refinement").
 //
 // The output is a conforming mesh whose faces are faces of the uniform
 // levels (leaves of the face hierarchy) and, where a leaf meets finer

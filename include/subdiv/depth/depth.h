@@ -23,8 +23,8 @@ struct DepthOptions {
 /// analysis where the paper's argument does not reach (Catmull-Clark);
 /// every other scheme from the analysis alone: the largest distance of a
 /// control vertex to its limit, contracted per step by the slowest rate
-/// among the configurations present (docs/design.md, "Depth"). A scheme
-/// with a two-step scheme (Scheme::two_steps: 4-8) is bounded through it,
+/// among the configurations present (docs/depth.md). A scheme
+/// with a two-step scheme (Scheme::fast_path.two_steps: 4-8) is bounded through it,
 /// in levels of two steps (DepthBound::steps_per_level).
 /// Throws as refine() does for meshes it cannot refine, and
 /// InvalidInputError naming a vertex (with its file and line from `lines`)

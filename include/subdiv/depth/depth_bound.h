@@ -2,7 +2,7 @@
 // A priori subdivision depth: how many uniform steps bring every control
 // vertex within eps of its limit position, from numbers read off the control
 // mesh before any refinement ("A priori computation of the subdivision
-// depth", Loop, Catmull-Clark and Doo-Sabin; docs/design.md, "Depth").
+// depth", Loop, Catmull-Clark and Doo-Sabin; docs/depth.md).
 //
 // Every bound here has the form
 //     distance after k steps <= max over terms of amplitude * rate^(k - start)
@@ -27,7 +27,7 @@ struct DepthBound {
   /// bounds below, which are formulas in the papers' measures.
   std::string scheme;
   /// "paper" for the published bounds, "analysis" for bounds derived from
-  /// the scheme's eigenvalues (docs/design.md says which is which).
+  /// the scheme's eigenvalues (docs/depth.md says which is which).
   std::string source;
   int start = 0;
   std::vector<DepthTerm> terms;
