@@ -543,15 +543,21 @@ int levels_to_resolve(const PolygonMesh& mesh, const Scheme& scheme, int cap) {
 
 }  // namespace
 
+std::optional<std::string> limit_unavailable(const Scheme& scheme) {
+  if (scheme.steps) return "no limit positions for composite schemes yet (refine and analyze cover them)";
+  const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
+  if (!is_primal(scheme.split) && !point_split && scheme.split != SplitRule::dual)
+    return std::string("no limit positions for the ") + to_string(scheme.split) +
+           ": they are written for the primal, sqrt3, sqrt2 and dual splits";
+  return std::nullopt;
+}
+
 LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options) {
   if (options.isolation_levels < 0 || options.max_resolve_levels < 0 || options.max_resolve_faces < 0)
     throw InvalidInputError("limit: refinement levels and faces must be >= 0");
-  if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no limit positions for composite schemes yet (refine and analyze cover them)");
+  if (const auto reason = limit_unavailable(scheme)) throw InvalidInputError(std::string(scheme.name) + ": " + *reason);
   if (scheme.split == SplitRule::dual) return dual_limit_positions(mesh, scheme, options);
   const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
-  if (!is_primal(scheme.split) && !point_split)
-    throw InvalidInputError(std::string(scheme.name) + ": no limit positions for the " + to_string(scheme.split) +
-                            ": they are written for the primal, sqrt3, sqrt2 and dual splits");
   // The closed forms are those of the standard rules. Under the
   // piecewise-smooth rules the generic masks of the modified matrices apply,
   // after at least one step: a vertex next to an extraordinary sharp vertex

@@ -279,16 +279,20 @@ AdaptiveResult LeafHierarchy::result() const {
 
 }  // namespace
 
+std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const AdaptiveOptions& options) {
+  if (scheme.steps) return "adaptive refinement does not cover composite schemes (their steps have no per-face rules)";
+  if (!is_primal(scheme.split)) return "adaptive refinement covers the quad and triangle splits";
+  if (interpolates_with_wide_masks(scheme, options.depth))
+    return "no adaptive refinement for an interpolating scheme: its vertices are on the limit surface at every "
+           "level, so their distance to it says nothing about the faces in between";
+  return std::nullopt;
+}
+
 AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
                                const AdaptiveOptions& options) {
   if (!(eps > 0.0)) throw InvalidInputError("accuracy must be a positive number");
-  if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": adaptive refinement does not cover composite schemes (their steps have no per-face rules)");
-  if (!is_primal(scheme.split))
-    throw InvalidInputError(std::string(scheme.name) + ": adaptive refinement covers the quad and triangle splits");
-  if (interpolates_with_wide_masks(scheme, options.depth))
-    throw InvalidInputError(std::string(scheme.name) +
-                            ": no adaptive refinement for an interpolating scheme: its vertices are on the limit "
-                            "surface at every level, so their distance to it says nothing about the faces in between");
+  if (const auto reason = adaptive_unavailable(scheme, options))
+    throw InvalidInputError(std::string(scheme.name) + ": " + *reason);
   if (!mesh.tags.holes.empty())
     throw InvalidInputError("face " + std::to_string(mesh.tags.holes.front()) +
                             " is tagged as a hole, and adaptive refinement has no rule for holes (it would fill them)");

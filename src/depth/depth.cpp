@@ -274,6 +274,19 @@ bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& opti
   return std::abs(mask[0] - 1.0) < 1e-9 && mask.tail(mask.size() - 1).cwiseAbs().maxCoeff() < 1e-9;
 }
 
+std::optional<std::string> depth_bound_unavailable(const Scheme& scheme, const DepthOptions& options) {
+  if (scheme.fast_path.two_steps) return depth_bound_unavailable(*scheme.fast_path.two_steps, options);
+  if (scheme.steps) return "no depth bound for composite schemes yet: it needs limit positions";
+  if (scheme.split == SplitRule::dual) return std::nullopt;
+  if (!is_primal(scheme.split))
+    return std::string("no depth bound for the ") + to_string(scheme.split) +
+           " yet: the bounds are written for the quad, triangle and dual splits";
+  if (interpolates_with_wide_masks(scheme, options))
+    return "no depth bound for an interpolating scheme: every vertex stays on the limit surface, so the "
+           "vertex-to-limit distance is zero at every depth and bounds nothing about the faces in between";
+  return std::nullopt;
+}
+
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options,
                        const SourceLines* lines) {
   // Two steps of 4-8 are a quad-split scheme's level (Scheme::two_steps):
@@ -284,16 +297,9 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
     bound.steps_per_level = 2;
     return bound;
   }
-  if (scheme.steps) throw InvalidInputError(std::string(scheme.name) + ": no depth bound for composite schemes yet: it needs limit positions");
+  if (const auto reason = depth_bound_unavailable(scheme, options))
+    throw InvalidInputError(std::string(scheme.name) + ": " + *reason);
   if (scheme.split == SplitRule::dual) return dual_depth_bound(mesh, scheme, options);
-  if (!is_primal(scheme.split))
-    throw InvalidInputError(std::string(scheme.name) + ": no depth bound for the " + to_string(scheme.split) +
-                            " yet: the bounds are written for the quad, triangle and dual splits");
-  if (interpolates_with_wide_masks(scheme, options))
-    throw InvalidInputError(std::string(scheme.name) +
-                            ": no depth bound for an interpolating scheme: every vertex stays on the limit "
-                            "surface, so the vertex-to-limit distance is zero at every depth and bounds nothing "
-                            "about the faces in between");
   // Quad-split schemes on a mesh with other faces: the bound starts after
   // the first step, which makes every face a quad (as the paper does for
   // Doo-Sabin and the survey for Catmull-Clark).

@@ -688,5 +688,16 @@ run quiet-first 0 -q convert "$data/nan_coordinate.obj" "$work/nanq.obj" && [ ! 
   fail "-q convert: printed on stderr: $(cat "$work/err")"
 run quiet-limit 0 limit "$meshes/cube.obj" -o "$work/lq.obj" -q
 
+# One support matrix, from the library's own checks: what it says no to, the command refuses with the same reason.
+run schemes-matrix 0 schemes --matrix &&
+  grep -qE '^catmull-clark +yes +yes +yes +yes +yes +yes$' "$work/out" && pass || fail "schemes --matrix: catmull-clark row"
+grep -qE '^sqrt3 +yes +yes +no \([0-9]+\) ' "$work/out" && grep -q "no depth bound for the sqrt3 split" "$work/out" && pass ||
+  fail "schemes --matrix: sqrt3's depth"
+sed -n '/<!-- schemes-matrix -->/,/<!-- \/schemes-matrix -->/p' "$project_dir/README.md" | sed '1,2d;$d' | sed '$d' \
+  >"$work/readme_matrix" && diff -q "$work/out" "$work/readme_matrix" >/dev/null && pass ||
+  fail "README.md's support matrix differs from 'subdiv schemes --matrix' (paste the command's output)"
+run depth-sqrt3-refused 1 depth "$meshes/cube.obj" -s sqrt3 --triangulate --eps 0.01 &&
+  stderr_one_line depth-sqrt3-refused && stderr_has depth-sqrt3-refused "no depth bound for the sqrt3 split"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -258,22 +258,6 @@ int run_refine(const RefineCommandOptions& opt) {
   return kExitOk;
 }
 
-int run_schemes() {
-  int width = 0;  // the longest name, so that the descriptions line up
-  for (const Scheme* s : all_schemes()) width = std::max(width, static_cast<int>(s->name.size()));
-  for (const CurveScheme* s : all_curve_schemes()) width = std::max(width, static_cast<int>(s->name.size()));
-  for (const Scheme* s : all_schemes()) {
-    std::printf("%-*s %s\n", width, std::string(s->name).c_str(), std::string(s->summary).c_str());
-    std::printf("%-*s   %s; %s\n", width, "", to_string(s->split), std::string(s->citation).c_str());
-  }
-  // Curve schemes refine polylines (OBJ `l` lines), not faces.
-  for (const CurveScheme* s : all_curve_schemes()) {
-    std::printf("%-*s %s\n", width, std::string(s->name).c_str(), std::string(s->summary).c_str());
-    std::printf("%-*s   curve scheme (polylines, %s); %s\n", width, "", s->dual ? "dual" : "primal",
-                std::string(s->citation).c_str());
-  }
-  return kExitOk;
-}
 
 }  // namespace
 
@@ -330,12 +314,6 @@ Command add_refine_command(CLI::App& app) {
       "  subdiv refine data/meshes/cube.obj -s midpoint --degree 4 -l 3 -o /tmp/m4.obj\n"
       "  subdiv refine data/meshes/tetrahedron.obj -s quasi-4-8 -l 3 --full-steps -o /tmp/tetra_q48.obj");
   return [opt] { return run_refine(*opt); };
-}
-
-Command add_schemes_command(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("schemes", "List the subdivision schemes with their rules and sources");
-  cmd->footer("Example:\n  subdiv schemes");
-  return [] { return run_schemes(); };
 }
 
 }  // namespace subdiv::cli

@@ -53,6 +53,8 @@
 //   Catmull-Clark, no subdominant pair, so no normal.
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "subdiv/core/types.h"
@@ -107,6 +109,10 @@ struct LimitResult {
   double sharpness_left = 0.0;
   int levels_refined = 0;  ///< refinement steps taken before the masks
 };
+
+/// Why limit_positions() refuses `scheme` whatever the mesh (composite
+/// schemes, the midedge split), or nothing where it covers it.
+std::optional<std::string> limit_unavailable(const Scheme& scheme);
 
 /// Limit positions (and normals) of every vertex of `mesh` under `scheme`.
 /// Throws as refine() does for meshes it cannot refine, and

@@ -11,6 +11,8 @@
 // its limit is exactly what uniform refinement gives there.
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "subdiv/depth/depth.h"
@@ -53,5 +55,10 @@ struct AdaptiveResult {
 /// and faces only: no channels and no tags.
 AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
                                const AdaptiveOptions& options = {});
+
+/// Why adaptive_refine() refuses `scheme` whatever the mesh (composite
+/// schemes, splits other than quad and triangle, interpolating schemes with
+/// wide masks), or nothing where it covers it.
+std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const AdaptiveOptions& options = {});
 
 }  // namespace subdiv

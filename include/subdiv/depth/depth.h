@@ -4,6 +4,8 @@
 // that refines and measures.
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "subdiv/depth/depth_bound.h"
@@ -32,6 +34,11 @@ struct DepthOptions {
 /// two triangles).
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options = {},
                        const SourceLines* lines = nullptr);
+
+/// Why depth_bound() refuses `scheme` whatever the mesh (composite schemes,
+/// splits without a bound, interpolating schemes with wide masks), or
+/// nothing where a bound applies.
+std::optional<std::string> depth_bound_unavailable(const Scheme& scheme, const DepthOptions& options = {});
 
 /// Whether the scheme interpolates with masks wider than a face (the
 /// Butterfly schemes, Kobbelt's): its vertices are on the limit surface from
