@@ -317,7 +317,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   const PaperDepthBound paper = scheme.traits.paper_depth_bound;
   if (paper == PaperDepthBound::loop_theorem_3 || paper == PaperDepthBound::cheng_catmull_clark) {
     DepthBound bound = paper == PaperDepthBound::loop_theorem_3
-                           ? loop_paper_bound(distances.max, max_valence(first))
+                           ? loop_paper_bound(scheme, distances.max, max_valence(first))
                            : cheng_catmull_clark_bound(max_second_difference(first), start);
     bound.scheme = std::string(scheme.name);
     const WorstRate extraordinary = worst_rate(level, scheme, true);

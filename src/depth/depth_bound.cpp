@@ -8,7 +8,8 @@
 #include <limits>
 
 #include "subdiv/core/error.h"
-#include "subdiv/rules/loop.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/refine/ring_mesh.h"
 
 namespace subdiv {
 
@@ -39,14 +40,30 @@ int DepthBound::depth_for(double eps) const {
                           std::to_string(eps));
 }
 
-double loop_contraction(int valence) {
+double loop_contraction(const Scheme& scheme, int valence) {
   // Paper, proof of Theorem 3: n P' - sum of the new neighbours
   // = (5/8 - n beta)(n P - sum of the old neighbours) for the vertex point
-  // P' and the edge points around it.
-  return 5.0 / 8.0 - valence * loop_beta(valence);
+  // P' and the edge points around it. With Loop's masks (vertex point
+  // (1 - n beta) P + beta sum Q, edge point 3/8 on each end, 1/8 on each
+  // opposite vertex) the factor is the vertex mask's weight on P less the
+  // edge mask's weight on P: read off the scheme's own masks at an interior
+  // vertex of valence n, so no weight is restated here.
+  const RingMesh ring = ring_mesh(SplitRule::triangle, {Configuration::Kind::interior, valence, CornerType::convex}, 1);
+  const MeshTopology t(ring.mesh);
+  const LevelView view{t, {}, 0.0, {}, {}, scheme.parameters};
+  auto weight_on = [](const MaskBuilder& mask, Index v) {
+    double w = 0.0;
+    for (std::size_t i = 0; i < mask.vertices().size(); ++i)
+      if (mask.vertices()[i] == v) w += mask.weights()[i];
+    return w;
+  };
+  MaskBuilder vertex_mask, edge_mask;
+  scheme.masks.vertex_point(view, ring.centre, VertexRule::smooth, vertex_mask);
+  scheme.masks.edge_point(view, t.vertex_edges(ring.centre)[0], EdgeRule::smooth, edge_mask);
+  return weight_on(vertex_mask, ring.centre) - weight_on(edge_mask, ring.centre);
 }
 
-DepthBound loop_paper_bound(double max_limit_distance, int max_valence) {
+DepthBound loop_paper_bound(const Scheme& scheme, double max_limit_distance, int max_valence) {
   // Refinement creates valence-6 vertices, so n is at least 6 (paper,
   // discussion of Figure 12); 5/8 - n beta grows with n.
   const int n = std::max(6, max_valence);
@@ -55,7 +72,7 @@ DepthBound loop_paper_bound(double max_limit_distance, int max_valence) {
           0,
           {{"largest control-vertex-to-limit distance, contracted by 5/8 - n beta at n = " + std::to_string(n) +
                 " (paper, Theorem 3)",
-            max_limit_distance, loop_contraction(n)}}};
+            max_limit_distance, loop_contraction(scheme, n)}}};
 }
 
 DepthBound cheng_catmull_clark_bound(double max_second_difference, int start) {

@@ -28,9 +28,9 @@ TEST(LoopContraction, EqualsTheSquaredCentralEigenvalue) {
   // 5/8 - n beta(n) = (3/8 + 1/4 cos(2 pi / n))^2 by Loop's choice of beta.
   for (int n = 3; n <= 40; ++n) {
     const double root = 3.0 / 8.0 + 0.25 * std::cos(2.0 * std::numbers::pi / n);
-    EXPECT_NEAR(loop_contraction(n), root * root, 1e-15) << "valence " << n;
+    EXPECT_NEAR(loop_contraction(loop_scheme(), n), root * root, 1e-15) << "valence " << n;
   }
-  EXPECT_DOUBLE_EQ(loop_contraction(6), 0.25);
+  EXPECT_DOUBLE_EQ(loop_contraction(loop_scheme(), 6), 0.25);
 }
 
 TEST(LoopContraction, OldVerticesApproachTheirLimitByExactlyThatFactor) {
@@ -45,7 +45,7 @@ TEST(LoopContraction, OldVerticesApproachTheirLimitByExactlyThatFactor) {
   const LimitDistances after = limit_distances(child, loop_scheme());
   const Index vertex_points = t.edge_count();  // triangle split: [edge points | vertex points]
   for (Index v = 0; v < t.vertex_count(); ++v) {
-    const double expected = loop_contraction(t.valence(v)) * before.distances[static_cast<std::size_t>(v)];
+    const double expected = loop_contraction(loop_scheme(), t.valence(v)) * before.distances[static_cast<std::size_t>(v)];
     EXPECT_NEAR(after.distances[static_cast<std::size_t>(vertex_points + v)], expected, 1e-12) << "vertex " << v;
   }
 }
@@ -67,8 +67,8 @@ TEST(DepthBound, DepthIsTheFirstLevelWithinEps) {
 TEST(DepthBound, RefusesWhatCannotConverge) {
   const DepthBound bound{"test", "test", 0, {{"a", 1.0, 1.0}}};
   EXPECT_THROW((void)bound.depth_for(0.1), InvalidInputError);
-  EXPECT_THROW((void)loop_paper_bound(1.0, 6).depth_for(0.0), InvalidInputError);
-  EXPECT_THROW((void)loop_paper_bound(1.0, 6).depth_for(-1.0), InvalidInputError);
+  EXPECT_THROW((void)loop_paper_bound(loop_scheme(), 1.0, 6).depth_for(0.0), InvalidInputError);
+  EXPECT_THROW((void)loop_paper_bound(loop_scheme(), 1.0, 6).depth_for(-1.0), InvalidInputError);
 }
 
 TEST(DepthBound, PaperFormulasInClosedForm) {
@@ -80,7 +80,7 @@ TEST(DepthBound, PaperFormulasInClosedForm) {
               std::max(0, static_cast<int>(std::ceil(std::log(m / (3.0 * eps)) / std::log(4.0) - 1e-12))));
     EXPECT_EQ(doo_sabin_bound(m, 1).depth_for(eps),
               1 + std::max(0, static_cast<int>(std::ceil(std::log(m / (4.0 * eps)) / std::log(4.0) - 1e-12))));
-    EXPECT_EQ(loop_paper_bound(m, 5).depth_for(eps),
+    EXPECT_EQ(loop_paper_bound(loop_scheme(), m, 5).depth_for(eps),
               std::max(0, static_cast<int>(std::ceil(std::log(m / eps) / std::log(4.0) - 1e-12))));
   }
 }

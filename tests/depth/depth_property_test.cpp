@@ -138,7 +138,7 @@ TEST(DepthProperty, HighValencePoleNeedsTheMaximumValence) {
   const LimitDistances start = limit_distances(top, loop_scheme());
   ASSERT_GE(top.positions[static_cast<std::size_t>(start.max_vertex)].z, 6.9) << "the pole is the furthest vertex";
   const double eps = start.max / 16.0 * 1.01;  // the mean valence's rate 1/4: two steps
-  const DepthBound mean = loop_paper_bound(start.max, 6);
+  const DepthBound mean = loop_paper_bound(loop_scheme(), start.max, 6);
   const DepthBound bound = depth_bound(top, loop_scheme());
   const int mean_depth = mean.depth_for(eps);
   const int depth = bound.depth_for(eps);

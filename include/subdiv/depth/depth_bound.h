@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "subdiv/rules/scheme.h"
+
 namespace subdiv {
 
 /// One geometric decay: distance <= amplitude * rate^(steps after start).
@@ -32,7 +34,7 @@ struct DepthBound {
   int start = 0;
   std::vector<DepthTerm> terms;
   /// Refinement steps per level of the bound: 1, or 2 for a scheme bounded
-  /// through its two-step scheme (Scheme::two_steps: 4-8, whose levels are
+  /// through its two-step scheme (Scheme::fast_path.two_steps: 4-8, whose levels are
   /// then quad splits, two of its steps each).
   int steps_per_level = 1;
 
@@ -47,13 +49,15 @@ struct DepthBound {
 /// Loop's even-vertex contraction 5/8 - n beta(n) with Loop's beta (paper,
 /// Theorem 3): the distance of a valence-n vertex to its limit shrinks by
 /// exactly this factor per step. Equals (3/8 + 1/4 cos(2 pi / n))^2.
-double loop_contraction(int valence);
+/// Read off `scheme`'s own masks (Loop's rules: the vertex mask's weight on
+/// the vertex less the edge mask's weight on its end).
+double loop_contraction(const Scheme& scheme, int valence);
 
 /// The paper's Loop bound (Theorem 3, Corollary 3): distance after k steps
 /// <= (5/8 - n beta)^k M0, with M0 the largest control-vertex-to-limit
 /// distance and n the largest valence at any level (at least 6: refinement
 /// creates valence-6 vertices).
-DepthBound loop_paper_bound(double max_limit_distance, int max_valence);
+DepthBound loop_paper_bound(const Scheme& scheme, double max_limit_distance, int max_valence);
 
 /// Cheng's Catmull-Clark bound (paper, Theorem 2, Corollary 2) on a quad
 /// mesh: distance after k steps <= (1/3) (1/4)^k M, with M the largest
