@@ -235,7 +235,7 @@ int run_refine(const RefineCommandOptions& opt) {
                                          mesh.face_count(), seconds);
     stats.push_back(line);
     // Progress for long runs only, so that quick runs stay quiet.
-    if (std::chrono::duration<double>(now - start).count() > 1.0) warnf("subdiv: %s\n", line.c_str());
+    if (std::chrono::duration<double>(now - start).count() > 1.0) progressf("subdiv: %s\n", line.c_str());
   };
   check_refinable(file.mesh, *scheme, options, &file.lines);  // bad input first, then its size
   check_fits_in_memory(file.mesh, *scheme, options.levels, opt.no_memory_check, "refine");

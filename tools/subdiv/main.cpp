@@ -82,15 +82,21 @@ int main(int argc, char** argv) {
   }
 
   set_quiet(quiet_flag);
+  // Warnings are kept while the command runs and printed after it succeeds;
+  // a failure prints its one line only.
+  const auto finish = [](int code) {
+    finish_warnings(code == kExitOk);
+    return code;
+  };
   try {
-    if (app.got_subcommand("info")) return info();
-    if (app.got_subcommand("convert")) return convert();
-    if (app.got_subcommand("refine")) return refine();
-    if (app.got_subcommand("schemes")) return schemes();
-    if (app.got_subcommand("limit")) return limit();
-    if (app.got_subcommand("analyze")) return analyze();
-    if (app.got_subcommand("depth")) return depth();
-    if (app.got_subcommand("adaptive")) return adaptive();
+    if (app.got_subcommand("info")) return finish(info());
+    if (app.got_subcommand("convert")) return finish(convert());
+    if (app.got_subcommand("refine")) return finish(refine());
+    if (app.got_subcommand("schemes")) return finish(schemes());
+    if (app.got_subcommand("limit")) return finish(limit());
+    if (app.got_subcommand("analyze")) return finish(analyze());
+    if (app.got_subcommand("depth")) return finish(depth());
+    if (app.got_subcommand("adaptive")) return finish(adaptive());
     print_error("no command given (run 'subdiv --help' for usage)");
     return kExitBadInput;
   } catch (const subdiv::Error& e) {

@@ -18,6 +18,7 @@ void check_output_path(const std::string& input, const std::string& output) {
 
 namespace {
 bool quiet_ = false;
+std::vector<std::string> pending_;  // warnings of the running command
 }  // namespace
 
 void set_quiet(bool quiet) { quiet_ = quiet; }
@@ -27,8 +28,24 @@ void warnf(const char* format, ...) {
   if (quiet_) return;
   std::va_list args;
   va_start(args, format);
+  char line[2048];
+  std::vsnprintf(line, sizeof line, format, args);
+  va_end(args);
+  pending_.emplace_back(line);
+}
+
+void progressf(const char* format, ...) {
+  if (quiet_) return;
+  std::va_list args;
+  va_start(args, format);
   std::vfprintf(stderr, format, args);
   va_end(args);
+}
+
+void finish_warnings(bool succeeded) {
+  if (succeeded)
+    for (const std::string& line : pending_) std::fputs(line.c_str(), stderr);
+  pending_.clear();
 }
 
 void print_warnings(const std::string& path, const std::vector<std::string>& warnings) {

@@ -15,11 +15,18 @@ void check_output_path(const std::string& input, const std::string& output);
 void set_quiet(bool quiet);
 bool quiet();
 
-/// Prints a warning or progress line (printf format, "subdiv: ..." and the
-/// newline included by the caller) on stderr, unless quiet.
+/// Keeps a warning line (printf format, "subdiv: warning: ..." and the
+/// newline included by the caller) for finish_warnings(), unless quiet.
 [[gnu::format(printf, 1, 2)]] void warnf(const char* format, ...);
 
-/// Prints each note as "subdiv: warning: PATH: NOTE" on stderr, unless quiet.
+/// Prints a progress line on stderr at once, unless quiet.
+[[gnu::format(printf, 1, 2)]] void progressf(const char* format, ...);
+
+/// Prints the kept warnings when the command succeeded; drops them when it
+/// failed, so that a failure stays one line on stderr.
+void finish_warnings(bool succeeded);
+
+/// Keeps each note as the warning "subdiv: warning: PATH: NOTE" (warnf).
 void print_warnings(const std::string& path, const std::vector<std::string>& warnings);
 
 }  // namespace subdiv::cli
