@@ -17,11 +17,16 @@ failed=0
 fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
 pass() { passed=$((passed + 1)); }
 
+# A hang guard, not a speed check: SUBDIV_CLI_TIMEOUT seconds per command
+# (tests/CMakeLists.txt: longer under the sanitizers, which run the analysis
+# 10-20x slower).
+limit_s=${SUBDIV_CLI_TIMEOUT:-20}
+
 # run NAME EXPECTED_EXIT ARGS...: runs subdiv, keeps stdout/stderr in $work.
 run() {
   local name=$1 expected=$2
   shift 2
-  timeout 20 "$SUBDIV" "$@" >"$work/out" 2>"$work/err"
+  timeout "$limit_s" "$SUBDIV" "$@" >"$work/out" 2>"$work/err"
   local code=$?
   if [ "$code" -ne "$expected" ]; then
     fail "$name: exit $code, expected $expected; stderr: $(head -c 300 "$work/err")"
@@ -490,7 +495,7 @@ run ps-limit-fold 0 limit "$meshes/l_shape.obj" -s catmull-clark --boundary-rule
 # Every shared mesh: exit 0 or 1, never a crash, and a failure is one line.
 if [ -d "$shared" ]; then
   while IFS= read -r -d '' mesh; do
-    timeout 20 "$SUBDIV" info "$mesh" >"$work/out" 2>"$work/err"
+    timeout "$limit_s" "$SUBDIV" info "$mesh" >"$work/out" 2>"$work/err"
     code=$?
     if [ "$code" -ne 0 ] && [ "$code" -ne 1 ]; then
       fail "info $mesh: exit $code"
