@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcairo2-dev libfontconfig-dev  # subdiv analyze: --json output, plots
   libassimp-dev libosd-dev  # peers in bench/ (Assimp import, OpenSubdiv topology)
+  python3  # the CLI test reads the --json documents
 )
 
 missing=()

@@ -59,7 +59,7 @@ run info-nonmanifold 1 info "$data/nonmanifold_edge.obj"
 stderr_one_line info-nonmanifold
 stderr_has info-nonmanifold "nonmanifold_edge.obj:9: edge 0-1 is shared by 3 faces"
 stdout_has info-nonmanifold "non-manifold edge"
-run info-isolated 0 info "$data/isolated_vertex.obj" && stdout_has info-isolated "0 errors, 1 warnings"
+run info-isolated 0 info "$data/isolated_vertex.obj" && stdout_has info-isolated "0 errors, 1 warning"
 
 for bad in zero_index.obj index_out_of_range.obj truncated_vertex.obj garbage.obj lying_header.ply \
            index_out_of_range.off missing_file.obj; do
@@ -490,7 +490,7 @@ run ps-limit-l 0 limit "$meshes/l_shape.obj" -s catmull-clark --boundary-rules p
   pass || fail "limit piecewise-smooth L: expected 21 unit vn lines"
 run ps-limit-fold 0 limit "$meshes/l_shape.obj" -s catmull-clark --boundary-rules piecewise-smooth --flatness 0 \
   --normals -o "$work/l_shape_fold.obj" && stderr_one_line ps-limit-fold &&
-  stderr_has ps-limit-fold "warning: 1 vertices have no limit normal"
+  stderr_has ps-limit-fold "warning: 1 vertex has no limit normal"
 
 # Every shared mesh: exit 0 or 1, never a crash, and a failure is one line.
 if [ -d "$shared" ]; then
@@ -703,6 +703,93 @@ sed -n '/<!-- schemes-matrix -->/,/<!-- \/schemes-matrix -->/p' "$project_dir/RE
   fail "README.md's support matrix differs from 'subdiv schemes --matrix' (paste the command's output)"
 run depth-sqrt3-refused 1 depth "$meshes/cube.obj" -s sqrt3 --triangulate --eps 0.01 &&
   stderr_one_line depth-sqrt3-refused && stderr_has depth-sqrt3-refused "no depth bound for the sqrt3 split"
+
+# One program: the options of every command that refines, the same everywhere.
+for command in "limit -o $work/ro_limit.obj" "depth --eps 0.01" "adaptive --eps 0.05 --max-level 3 -o $work/ro_adaptive.obj"; do
+  set -- $command
+  name=$1
+  shift
+  run "$name-rule-options" 0 "$name" "$meshes/l_shape.obj" "$@" -s catmull-clark --boundary edge-only \
+    --crease-method chaikin --boundary-rules piecewise-smooth --corner 0:convex --crease 0,1 --threads 1
+  run "$name-triangulate" 0 "$name" "$meshes/cube.obj" "$@" -s loop --triangulate
+  run "$name-tension" 1 "$name" "$meshes/cube.obj" "$@" --tension 0.1 && stderr_one_line "$name-tension" &&
+    stderr_has "$name-tension" "--tension applies to"
+  run "$name-quasi-boundary" 1 "$name" "$meshes/cube.obj" "$@" --quasi-boundary smoothed &&
+    stderr_has "$name-quasi-boundary" "--quasi-boundary applies to quasi-4-8, not to catmull-clark"
+  run "$name-flatness" 1 "$name" "$meshes/cube.obj" "$@" --flatness 0.5 &&
+    stderr_has "$name-flatness" "--flatness applies to --boundary-rules piecewise-smooth"
+  run "$name-crease-range" 1 "$name" "$meshes/cube.obj" "$@" --crease 0,99 &&
+    stderr_has "$name-crease-range" "vertex 99 is not in the mesh (8 vertices)"
+  run "$name-stats" 0 "$name" "$meshes/cube.obj" "$@" --stats && stdout_has "$name-stats" "read " &&
+    grep -qE '[0-9]\.[0-9]{3} s' "$work/out" && pass || fail "$name --stats: no phase times"
+done
+# A rule option changes the answer where it applies: edge-only moves the
+# L-shape's boundary away from its control polygon, so the bound differs.
+run depth-edge-and-corner 0 depth "$meshes/l_shape.obj" --eps 0.001 --json && cp "$work/out" "$work/depth_eac.json"
+run depth-edge-only 0 depth "$meshes/l_shape.obj" --eps 0.001 --json --boundary edge-only
+cmp -s "$work/out" "$work/depth_eac.json" && fail "depth --boundary edge-only: the same document as edge-and-corner" ||
+  pass
+
+# Options that do not apply are refused in one line, never ignored.
+run ascii-obj 1 refine "$meshes/cube.obj" -o "$work/x.obj" --ascii && stderr_one_line ascii-obj &&
+  stderr_has ascii-obj "--ascii applies to PLY output"
+run big-endian-obj 1 convert "$meshes/cube.obj" "$work/x.obj" --big-endian && stderr_has big-endian-obj "applies to PLY"
+run no-tags-ply 1 convert "$meshes/cube.obj" "$work/x.ply" --no-tags && stderr_has no-tags-ply "applies to OBJ output"
+run hole-faces-obj 1 convert "$meshes/cube.obj" "$work/x.obj" --keep-hole-faces &&
+  stderr_has hole-faces-obj "applies to PLY and OFF output"
+run isolation-closed-form 1 limit "$meshes/cube.obj" -o "$work/x.obj" --isolation-levels 3 &&
+  stderr_has isolation-closed-form "--isolation-levels applies to the generic masks" &&
+  run isolation-generic 0 limit "$meshes/cube.obj" -o "$work/x.obj" --isolation-levels 3 --masks generic
+run closed-form-butterfly 1 limit "$meshes/cube.obj" -s butterfly --triangulate --masks closed-form -o "$work/x.obj" &&
+  stderr_has closed-form-butterfly "butterfly has no closed-form limit masks"
+run corner-angles-standard 1 refine "$meshes/cube.obj" -o "$work/x.obj" --corner-angles measured &&
+  stderr_has corner-angles-standard "--corner-angles applies to --boundary-rules piecewise-smooth"
+run analyze-flatness 1 analyze -s loop --flatness 0.5 && stderr_has analyze-flatness "--flatness applies to"
+
+# adaptive refuses at once what cannot fit, with the a-priori bound's depth.
+run adaptive-memory 1 adaptive "$meshes/spot_control_mesh.obj" --eps 1e-9 --max-level 12 -o "$work/huge.obj" &&
+  stderr_one_line adaptive-memory && stderr_has adaptive-memory "adaptive refinement over 12 uniform levels" &&
+  stderr_has adaptive-memory "the a-priori bound for accuracy 1e-09 needs" && stderr_has adaptive-memory "--no-memory-check"
+[ ! -e "$work/huge.obj" ] && pass || fail "adaptive-memory: wrote a file"
+
+# Plurals: one of a thing is singular.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$work/one_triangle.obj"
+run plural-refine 0 refine "$work/one_triangle.obj" -s loop -l 0 -o "$work/one.obj" --stats &&
+  stdout_has plural-refine "3 vertices, 1 face" && stdout_has plural-refine "0 levels"
+
+# --json: one document on stdout, with the keys docs/cli.md lists.
+json_keys() {  # NAME KEY...: the document in $work/out has these top-level keys
+  local name=$1
+  shift
+  command -v python3 >/dev/null 2>&1 || return 0
+  python3 -c '
+import json, sys
+doc = json.load(open(sys.argv[1]))
+missing = [k for k in sys.argv[2:] if k not in doc]
+sys.exit("missing: " + ", ".join(missing) if missing else 0)' "$work/out" "$@" && pass || fail "$name --json: not JSON with $*"
+}
+run json-info 0 info "$meshes/cube.obj" --json &&
+  json_keys json-info command input format vertices faces edges face_sizes valences tags valid errors warnings issues
+run json-info-invalid 1 info "$data/nonmanifold_edge.obj" --json && stderr_one_line json-info-invalid &&
+  json_keys json-info-invalid valid issues
+run json-refine 0 refine "$meshes/cube.obj" -l 2 -o "$work/j.obj" --json &&
+  json_keys json-refine command input output scheme threads levels seconds
+run json-refine-curve 0 refine "$work/curves.obj" -s chaikin -l 2 -o "$work/jc.obj" --json &&
+  json_keys json-refine-curve command scheme levels seconds
+run json-limit 0 limit "$meshes/cube.obj" -o "$work/j.obj" --json --normals &&
+  json_keys json-limit command scheme masks vertices at_limit no_normal seconds
+run json-depth 0 depth "$meshes/cube.obj" --eps 0.01 --verify --json &&
+  json_keys json-depth command scheme eps bound depth bound_at_depth levels trade_off verify seconds
+run json-adaptive 0 adaptive "$meshes/cube.obj" --eps 0.01 -o "$work/j.obj" --json &&
+  json_keys json-adaptive command scheme eps vertices faces transition_faces largest_distance bound_steps uniform seconds
+if command -v python3 >/dev/null 2>&1; then
+  python3 -c '
+import json, sys
+doc = json.load(sys.stdin)
+assert doc["largest_distance"] <= doc["eps"], doc
+assert doc["bound_steps"] >= doc["uniform"]["steps"], doc
+' <"$work/out" && pass || fail "adaptive --json: a distance over eps, or the bound below the measured depth"
+fi
 
 # Every command on every shared mesh that refine accepts (meshes under
 # 200 kB, one level), with -q: success, or one stderr line and exit 1; never

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
+
+#include <fmt/format.h>
 #include <string>
 #include <vector>
 
@@ -12,9 +15,12 @@
 #include "input_mesh.h"
 #include "output_checks.h"
 #include "wording.h"
-#include "scheme_option.h"
+#include "command_report.h"
+#include "memory_guard.h"
+#include "refinement_options.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/adaptive.h"
+#include "subdiv/depth/depth.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/refine/refine.h"
 
@@ -46,45 +52,94 @@ void warn_not_carried(const std::string& path, const PolygonMesh& input, const P
 struct AdaptiveCommandOptions {
   std::string input;
   std::string output;
-  std::string scheme = std::string(default_scheme().name);
   double eps = 0.0;
   int max_level = 8;
-  bool triangulate = false;
-  bool allow_non_manifold = false;
   bool ascii = false;
+  bool no_memory_check = false;
+  RefinementOptionValues refinement;
+  ReportOptionValues report;
 };
 
+// The uniform steps adaptive refinement may take: up to --max-level, and no
+// further than the a-priori bound's depth, at which every vertex is within
+// eps. Nothing tighter than --max-level where the scheme or the mesh has no
+// bound (the measured distances decide then).
+int steps_needed_at_most(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options,
+                         std::optional<int>& bound_steps) {
+  if (depth_bound_unavailable(scheme, options.depth)) return options.max_level;
+  try {
+    const DepthBound bound = depth_bound(mesh, scheme, options.depth);
+    bound_steps = bound.depth_for(eps) * bound.steps_per_level;
+  } catch (const InvalidInputError&) {
+    return options.max_level;  // a configuration without a rate: no bound
+  }
+  return std::min(*bound_steps, options.max_level);
+}
+
 int run_adaptive(const AdaptiveCommandOptions& opt) {
-  const Scheme& scheme = scheme_named(opt.scheme);
+  const Scheme scheme = chosen_scheme(opt.refinement);
+  const std::string name(scheme.name);
   check_output_path(opt.input, opt.output);
+  check_ascii_applies(opt.ascii, opt.output);
+  PhaseClock clock;
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
-  triangulate_if_asked(scheme, opt.triangulate, file);
+  AdaptiveOptions options;
+  options.max_level = opt.max_level;
+  apply_refinement_options(opt.refinement, scheme, file, options.depth.refine);
   if (!file.mesh.tags.holes.empty())
     throw InvalidInputError(opt.input + ": face " + std::to_string(file.mesh.tags.holes.front()) +
                             " is tagged as a hole, and adaptive refinement has no rule for holes (it would fill them); "
                             "'subdiv refine' keeps them");
   drop_input_normals(opt.input, file.mesh);
+  clock.lap("read");
 
-  AdaptiveOptions options;
-  options.max_level = opt.max_level;
-  options.depth.refine.allow_non_manifold = opt.allow_non_manifold;
   check_refinable(file.mesh, scheme, options.depth.refine, &file.lines);  // errors with the file's lines
+  std::optional<int> bound_steps;
+  const int steps = steps_needed_at_most(file.mesh, scheme, opt.eps, options, bound_steps);
+  const std::string why = bound_steps ? fmt::format("the a-priori bound for accuracy {:g} needs {}, --max-level is {}",
+                                                    opt.eps, count_of(*bound_steps, "step", "steps"), opt.max_level)
+                                      : fmt::format("--max-level {}", opt.max_level);
+  check_fits_in_memory(estimated_adaptive_peak_bytes(file.mesh, scheme, steps), opt.no_memory_check,
+                       fmt::format("adaptive refinement over {} uniform levels ({})", steps, why));
+  clock.lap("bound");
   const AdaptiveResult result = adaptive_refine(file.mesh, scheme, opt.eps, options);
+  clock.lap("adaptive");
   warn_dropped_tags(opt.input, file.mesh.tags);
   warn_not_carried(opt.input, file.mesh, result.mesh);
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
   print_warnings(opt.output, write_mesh(result.mesh, opt.output, wopt));
+  clock.lap("write");
   const double worst = result.distances.empty() ? 0.0 : *std::max_element(result.distances.begin(), result.distances.end());
-  std::printf("wrote %s: %d vertices, %d faces (%lld transition faces), levels 0..%d, largest vertex-to-limit "
-              "distance %.6g (accuracy %g)\n",
-              opt.output.c_str(), result.mesh.vertex_count(), result.mesh.face_count(),
+  const double ratio = static_cast<double>(result.uniform_faces) / std::max(1, result.mesh.face_count());
+  if (opt.report.json) {
+    print_json({{"command", "adaptive"},
+                {"input", opt.input},
+                {"output", opt.output},
+                {"scheme", name},
+                {"eps", opt.eps},
+                {"vertices", result.mesh.vertex_count()},
+                {"faces", result.mesh.face_count()},
+                {"transition_faces", result.transition_faces},
+                {"deepest_level", result.leaves_per_level_max},
+                {"largest_distance", worst},
+                {"bound_steps", bound_steps ? nlohmann::ordered_json(*bound_steps) : nlohmann::ordered_json(nullptr)},
+                {"uniform", {{"steps", result.uniform_depth}, {"faces", result.uniform_faces}}},
+                {"uniform_to_adaptive_faces", ratio},
+                {"seconds", clock.json()}});
+    return kExitOk;
+  }
+  if (opt.report.stats) std::printf("%s\n", clock.text().c_str());
+  std::printf("wrote %s: %s, %s (%lld transition faces), levels 0..%d, largest vertex-to-limit distance %.6g "
+              "(accuracy %g)\n",
+              opt.output.c_str(), count_of(result.mesh.vertex_count(), "vertex", "vertices").c_str(),
+              count_of(result.mesh.face_count(), "face", "faces").c_str(),
               static_cast<long long>(result.transition_faces), result.leaves_per_level_max, worst, opt.eps);
-  std::printf("uniform refinement to the same accuracy: %d steps, %lld faces: %.2fx the adaptive faces\n",
-              result.uniform_depth, static_cast<long long>(result.uniform_faces),
-              static_cast<double>(result.uniform_faces) / std::max(1, result.mesh.face_count()));
+  std::printf("uniform refinement to the same accuracy: %s, %s: %.2fx the adaptive faces\n",
+              count_of(result.uniform_depth, "step", "steps").c_str(),
+              count_of(result.uniform_faces, "face", "faces").c_str(), ratio);
   return kExitOk;
 }
 
@@ -95,17 +150,17 @@ Command add_adaptive_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("adaptive", "Refine only where the mesh is further than an accuracy from the limit");
   cmd->add_option("input", opt->input, "Mesh (.obj, .ply or .off)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
-  cmd->add_option("-s,--scheme", opt->scheme, "Scheme: loop or catmull-clark (any in 'subdiv schemes' works)")
-      ->capture_default_str();
+  add_refinement_options(*cmd, opt->refinement, "Scheme (see 'subdiv schemes'; 'subdiv schemes --matrix' says which refine adaptively)");
   cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of an output vertex to its limit position")
       ->required()
       ->check(positive_number());
   cmd->add_option("--max-level", opt->max_level, "Refuse accuracies that need more uniform levels than this")
       ->capture_default_str()
       ->check(CLI::Range(0, 12));
-  cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
-  cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold, "Treat non-manifold elements as sharp");
+  add_report_options(*cmd, opt->report, "Print the time of each phase");
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
+  cmd->add_flag("--no-memory-check", opt->no_memory_check,
+                "Refine even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(
       "Faces are refined where a corner is further than the accuracy from its limit position\n"
       "(the paper's mobile vertices); neighbouring levels are joined by transition faces, so the\n"

@@ -159,6 +159,8 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
     return run_quasi_4_8_analysis(first, last, opt.warmup.value_or(8));
   }
   if (opt.warmup) throw InvalidInputError("--warmup applies to quasi-4-8");
+  if (opt.flatness && opt.boundary_rules != "piecewise-smooth")
+    throw InvalidInputError("--flatness applies to --boundary-rules piecewise-smooth");
 
   Configuration base;
   if (opt.boundary) base.kind = Configuration::Kind::boundary;

@@ -26,8 +26,23 @@ struct ConvertOptions {
   bool keep_hole_faces = false;
 };
 
+// The writer options that one output format alone reads: refused for the
+// others rather than ignored.
+void check_format_options(const ConvertOptions& opt) {
+  check_ascii_applies(opt.ascii, opt.output);
+  const FileFormat format = format_from_path(opt.output);
+  if (opt.ascii && opt.big_endian) throw InvalidInputError("--ascii and --big-endian exclude each other");
+  if (opt.big_endian && format != FileFormat::ply)
+    throw InvalidInputError("--big-endian applies to PLY output, not to " + opt.output);
+  if (opt.no_tags && format != FileFormat::obj)
+    throw InvalidInputError("--no-tags applies to OBJ output (the only format with tag lines), not to " + opt.output);
+  if (opt.keep_hole_faces && format == FileFormat::obj)
+    throw InvalidInputError("--keep-hole-faces applies to PLY and OFF output; OBJ keeps hole faces with their tags");
+}
+
 int run_convert(const ConvertOptions& opt) {
   check_output_path(opt.input, opt.output);
+  check_format_options(opt);
   const MeshFile file = read_mesh(opt.input);
   const ValidationReport report = validate(file.mesh, &file.lines);
   if (opt.validate) require_valid(report, opt.input);

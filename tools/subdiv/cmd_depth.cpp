@@ -7,12 +7,17 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <vector>
 #include <string>
 
 #include "commands.h"
 #include "input_mesh.h"
 #include "output_checks.h"
-#include "scheme_option.h"
+#include "command_report.h"
+#include "memory_guard.h"
+#include "refinement_options.h"
+#include "wording.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/depth.h"
 #include "subdiv/io/mesh_io.h"
@@ -28,11 +33,10 @@ constexpr std::int64_t kMaxVerifyFaces = std::int64_t{1} << 28;
 
 struct DepthCommandOptions {
   std::string input;
-  std::string scheme = std::string(default_scheme().name);
   double eps = 0.0;
   bool verify = false;
-  bool triangulate = false;
-  bool allow_non_manifold = false;
+  RefinementOptionValues refinement;
+  ReportOptionValues report;
 };
 
 void print_bound(const DepthBound& bound, double eps) {
@@ -47,10 +51,10 @@ void print_bound(const DepthBound& bound, double eps) {
 }
 
 void print_costs(const std::vector<LevelCost>& costs) {
-  std::printf("\n%6s %14s %14s %16s\n", "level", "vertices", "faces", "bytes");
+  std::printf("\n%6s %14s %14s %12s\n", "level", "vertices", "faces", "size");
   for (const LevelCost& c : costs)
-    std::printf("%6d %14lld %14lld %16lld\n", c.level, static_cast<long long>(c.vertices),
-                static_cast<long long>(c.faces), static_cast<long long>(c.bytes));
+    std::printf("%6d %14lld %14lld %12s\n", c.level, static_cast<long long>(c.vertices),
+                static_cast<long long>(c.faces), format_bytes(static_cast<double>(c.bytes)).c_str());
 }
 
 void print_trade_off(const DepthBound& bound, double eps) {
@@ -59,50 +63,102 @@ void print_trade_off(const DepthBound& bound, double eps) {
     std::printf("%12.6g %6d\n", eps / divisor, bound.depth_for(eps / divisor));
 }
 
+nlohmann::ordered_json bound_json(const DepthBound& bound, double eps) {
+  nlohmann::ordered_json terms = nlohmann::ordered_json::array();
+  for (const DepthTerm& term : bound.terms) {
+    DepthBound alone = bound;
+    alone.terms = {term};
+    terms.push_back({{"amplitude", term.amplitude}, {"rate", term.rate}, {"depth_alone", alone.depth_for(eps)},
+                     {"what", term.what}});
+  }
+  return {{"source", bound.source}, {"start", bound.start}, {"steps_per_level", bound.steps_per_level},
+          {"terms", terms}};
+}
+
+nlohmann::ordered_json costs_json(const std::vector<LevelCost>& costs) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const LevelCost& c : costs)
+    out.push_back({{"level", c.level}, {"vertices", c.vertices}, {"faces", c.faces}, {"bytes", c.bytes}});
+  return out;
+}
+
+nlohmann::ordered_json trade_off_json(const DepthBound& bound, double eps) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const double divisor : {1.0, 2.0, 10.0, 100.0, 1000.0})
+    out.push_back({{"accuracy", eps / divisor}, {"depth", bound.depth_for(eps / divisor)}});
+  return out;
+}
+
 int run_depth(const DepthCommandOptions& opt) {
-  const Scheme& scheme = scheme_named(opt.scheme);
+  const Scheme scheme = chosen_scheme(opt.refinement);
+  const std::string name(scheme.name);
+  PhaseClock clock;
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
-  triangulate_if_asked(scheme, opt.triangulate, file);
-
   DepthOptions options;
-  options.refine.allow_non_manifold = opt.allow_non_manifold;
+  apply_refinement_options(opt.refinement, scheme, file, options.refine);
+  clock.lap("read");
   check_refinable(file.mesh, scheme, options.refine, &file.lines);  // errors with the file's lines
   const DepthBound bound = depth_bound(file.mesh, scheme, options, &file.lines);
   const int depth = bound.depth_for(opt.eps);
-
-  std::printf("%s: %d vertices, %d faces, scheme %s\n", opt.input.c_str(), file.mesh.vertex_count(),
-              file.mesh.face_count(), std::string(scheme.name).c_str());
-  print_bound(bound, opt.eps);
   const int steps = bound.steps_per_level;
-  std::printf("\ndepth for accuracy %g: %d (bound there: %.6g)\n", opt.eps, depth, bound.at(depth));
-  if (steps > 1)
-    std::printf("levels count %d %s steps each (its two-step quad split): refine -l %d\n", steps,
-                std::string(scheme.name).c_str(), steps * depth);
-  print_costs(level_costs(file.mesh, scheme, depth));
-  print_trade_off(bound, opt.eps);
+  const std::vector<LevelCost> costs = level_costs(file.mesh, scheme, depth);
+  clock.lap("bound");
 
+  std::optional<DepthCheck> check;
   if (opt.verify) {
-    const LevelCost size = level_costs(file.mesh, scheme, depth).back();
+    const LevelCost& size = costs.back();
     if (size.faces > kMaxVerifyFaces || size.corners > std::numeric_limits<std::int32_t>::max() ||
         size.vertices > std::numeric_limits<std::int32_t>::max())
-      throw InvalidInputError("--verify: depth " + std::to_string(depth) + " has " + std::to_string(size.faces) +
-                              " faces and " + std::to_string(size.vertices) + " vertices (" +
-                              std::to_string(size.bytes) + " bytes), over the verification budget of 2^28 faces; "
-                              "verify a larger --eps");
-    const DepthCheck check = check_depth(file.mesh, scheme, bound, depth, options);
-    std::printf("\nverify: after %d steps the largest vertex-to-limit distance is %.6g (bound %.6g, accuracy %g): %s\n",
-                steps * depth, check.measured, check.bound, opt.eps, check.measured <= opt.eps ? "within" : "NOT within");
-    if (check.has_previous)
-      std::printf("verify: after %d steps it is %.6g: depth %d %s\n", steps * (depth - 1), check.measured_previous, depth - 1,
-                  check.measured_previous <= opt.eps ? "would already have been enough (the bound is not tight)"
-                                                     : "would not have been enough (the bound is tight)");
-    if (check.approximated > 0)
-      warnf("subdiv: warning: %d vertices match no canonical configuration: their limit is approximated\n",
-                   check.approximated);
-    if (check.measured > opt.eps) return kExitInternal;
+      throw InvalidInputError("--verify: depth " + std::to_string(depth) + " has " + count_of(size.faces, "face", "faces") +
+                              " and " + count_of(size.vertices, "vertex", "vertices") + " (" +
+                              format_bytes(static_cast<double>(size.bytes)) +
+                              "), over the verification budget of 2^28 faces; verify a larger --eps");
+    check = check_depth(file.mesh, scheme, bound, depth, options);
+    clock.lap("verify");
+    if (check->approximated > 0)
+      warnf("subdiv: warning: %s no canonical configuration: %s approximated\n",
+            count_of(check->approximated, "vertex matches", "vertices match").c_str(),
+            check->approximated == 1 ? "its limit is" : "their limits are");
   }
-  return kExitOk;
+  const bool within = !check || check->measured <= opt.eps;
+
+  if (opt.report.json) {
+    nlohmann::ordered_json verify = nullptr;
+    if (check) {
+      verify = {{"steps", steps * depth}, {"measured", check->measured}, {"bound", check->bound}, {"within", within},
+                {"approximated", check->approximated}};
+      if (check->has_previous) verify["measured_previous"] = check->measured_previous;
+    }
+    print_json({{"command", "depth"}, {"input", opt.input}, {"scheme", name},
+                {"vertices", file.mesh.vertex_count()}, {"faces", file.mesh.face_count()}, {"eps", opt.eps},
+                {"bound", bound_json(bound, opt.eps)}, {"depth", depth}, {"bound_at_depth", bound.at(depth)},
+                {"refine_levels", steps * depth}, {"levels", costs_json(costs)},
+                {"trade_off", trade_off_json(bound, opt.eps)}, {"verify", verify}, {"seconds", clock.json()}});
+    return within ? kExitOk : kExitInternal;
+  }
+
+  std::printf("%s: %s, %s, scheme %s\n", opt.input.c_str(), count_of(file.mesh.vertex_count(), "vertex", "vertices").c_str(),
+              count_of(file.mesh.face_count(), "face", "faces").c_str(), name.c_str());
+  print_bound(bound, opt.eps);
+  std::printf("\ndepth for accuracy %g: %d (bound there: %.6g)\n", opt.eps, depth, bound.at(depth));
+  if (steps > 1)
+    std::printf("levels count %d %s steps each (its two-step quad split): refine -l %d\n", steps, name.c_str(),
+                steps * depth);
+  print_costs(costs);
+  print_trade_off(bound, opt.eps);
+  if (check) {
+    std::printf("\nverify: after %s the largest vertex-to-limit distance is %.6g (bound %.6g, accuracy %g): %s\n",
+                count_of(steps * depth, "step", "steps").c_str(), check->measured, check->bound, opt.eps, within ? "within" : "NOT within");
+    if (check->has_previous)
+      std::printf("verify: after %s it is %.6g: depth %d %s\n", count_of(steps * (depth - 1), "step", "steps").c_str(),
+                  check->measured_previous,
+                  depth - 1,
+                  check->measured_previous <= opt.eps ? "would already have been enough (the bound is not tight)"
+                                                      : "would not have been enough (the bound is tight)");
+  }
+  if (opt.report.stats) std::printf("\n%s\n", clock.text().c_str());
+  return within ? kExitOk : kExitInternal;
 }
 
 }  // namespace
@@ -111,14 +167,12 @@ Command add_depth_command(CLI::App& app) {
   auto opt = std::make_shared<DepthCommandOptions>();
   CLI::App* cmd = app.add_subcommand("depth", "Uniform steps needed to come within an accuracy of the limit surface");
   cmd->add_option("input", opt->input, "Mesh (.obj, .ply or .off)")->required();
-  cmd->add_option("-s,--scheme", opt->scheme, "Scheme: loop, catmull-clark, doo-sabin or any in 'subdiv schemes'")
-      ->capture_default_str();
+  add_refinement_options(*cmd, opt->refinement, "Scheme (see 'subdiv schemes'; 'subdiv schemes --matrix' says which have a bound)");
   cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of a control vertex to the limit surface")
       ->required()
       ->check(positive_number());
   cmd->add_flag("--verify", opt->verify, "Refine to the depth and measure the distances (exit 2 if one exceeds eps)");
-  cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
-  cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold, "Treat non-manifold elements as sharp");
+  add_report_options(*cmd, opt->report, "Print the time of each phase");
   cmd->footer(
       "Loop, Catmull-Clark and Doo-Sabin use the bounds of 'A priori computation of the subdivision\n"
       "depth' (with a term for extraordinary vertices or faces from the analysis); other schemes a\n"

@@ -6,15 +6,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "commands.h"
 #include "input_mesh.h"
 #include "memory_guard.h"
 #include "output_checks.h"
-#include "rule_options.h"
-#include "scheme_option.h"
+#include "command_report.h"
+#include "refinement_options.h"
+#include "wording.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
@@ -27,36 +30,50 @@ namespace {
 struct LimitCommandOptions {
   std::string input;
   std::string output;
-  std::string scheme = std::string(default_scheme().name);
-  int isolation_levels = 2;
+  std::optional<int> isolation_levels;
   int levels = 0;
-  std::string masks = "closed-form";
-  std::string boundary;
-  std::string crease_method;
+  std::optional<std::string> masks;
   bool normals = false;
-  bool allow_non_manifold = false;
-  bool triangulate = false;
   bool ascii = false;
   bool no_memory_check = false;
-  RuleOptionValues rules;
+  RefinementOptionValues refinement;
+  ReportOptionValues report;
 };
 
+// The schemes with closed-form limit masks, as "a, b and c".
+std::string closed_form_scheme_names() {
+  std::vector<std::string> names;
+  for (const Scheme* s : all_schemes())
+    if (s->limit_masks) names.emplace_back(s->name);
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return out;
+}
+
 int run_limit(const LimitCommandOptions& opt) {
-  const Scheme* scheme = &scheme_named(opt.scheme);
+  const Scheme chosen = chosen_scheme(opt.refinement);
+  const Scheme* scheme = &chosen;
+  const std::string name(scheme->name);
   check_output_path(opt.input, opt.output);
+  check_ascii_applies(opt.ascii, opt.output);
+  const bool generic = opt.masks == "generic" || !scheme->limit_masks;
+  if (opt.masks == "closed-form" && !scheme->limit_masks)
+    throw InvalidInputError("--masks closed-form: " + name + " has no closed-form limit masks (" +
+                            closed_form_scheme_names() + " have); use --masks generic, its default");
+  if (opt.isolation_levels && !generic)
+    throw InvalidInputError("--isolation-levels applies to the generic masks, and " + name +
+                            " uses closed-form ones (refining only where they need it); add --masks generic");
+
+  PhaseClock clock;
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
-  triangulate_if_asked(*scheme, opt.triangulate, file);
-
   LimitOptions options;
-  apply_rule_options(opt.rules, file.mesh, options.refine);
-  options.route = opt.masks == "generic" ? LimitRoute::generic : LimitRoute::closed_form;
-  options.isolation_levels = opt.isolation_levels;
+  apply_refinement_options(opt.refinement, *scheme, file, options.refine);
+  options.route = generic ? LimitRoute::generic : LimitRoute::closed_form;
+  if (opt.isolation_levels) options.isolation_levels = *opt.isolation_levels;
   options.normals = opt.normals;
-  options.refine.allow_non_manifold = opt.allow_non_manifold;
-  if (opt.boundary == "edge-only") options.refine.boundary = BoundaryInterpolation::edge_only;
-  else if (opt.boundary == "edge-and-corner") options.refine.boundary = BoundaryInterpolation::edge_and_corner;
-  if (const auto method = crease_method_named(opt.crease_method)) options.refine.crease_method = *method;
+  clock.lap("read");
 
   // What the input cannot be refined for is said with its file and line,
   // as refine says it.
@@ -70,8 +87,10 @@ int run_limit(const LimitCommandOptions& opt) {
     warn_dropped_tags(opt.input, out.tags);
     drop_input_normals(opt.input, out);
     out = refine(out, *scheme, refine_options);
+    clock.lap("refine");
   }
   const LimitResult limit = limit_positions(out, *scheme, options);
+  clock.lap("limit");
   out.positions = limit.positions;
   if (opt.normals) {
     // One normal per vertex, as a face-varying channel indexed by vertex
@@ -84,61 +103,74 @@ int run_limit(const LimitCommandOptions& opt) {
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
   print_warnings(opt.output, write_mesh(out, opt.output, wopt));
+  clock.lap("write");
   // Why vertices were left short of the limit, and what would reach it.
-  const bool generic = options.route == LimitRoute::generic || !scheme->limit_masks;
+  const std::string levels_refined = count_of(limit.levels_refined, "level", "levels");
   if (limit.semi_sharp > 0) {
     const int more = static_cast<int>(std::ceil(limit.sharpness_left));
+    const std::string which = count_of(limit.semi_sharp, "vertex is", "vertices are");
     if (generic)
-      warnf(
-                   "subdiv: warning: %d vertices are at or next to semi-sharp features still unresolved after %d "
-                   "levels (sharpness up to %g left: --isolation-levels %d resolves them): written at their position "
-                   "there, not at the limit\n",
-                   limit.semi_sharp, limit.levels_refined, limit.sharpness_left, limit.levels_refined + more);
+      warnf("subdiv: warning: %s at or next to semi-sharp features still unresolved after %s (sharpness up to %g "
+            "left: --isolation-levels %d resolves them): written at their position there, not at the limit\n",
+            which.c_str(), levels_refined.c_str(), limit.sharpness_left, limit.levels_refined + more);
     else
-      warnf(
-                   "subdiv: warning: %d vertices are at or next to semi-sharp features still unresolved after %d "
-                   "levels (sharpness up to %g left), as far as the closed-form masks refine (the next level would "
-                   "pass %lld faces): written at their position there, not at the limit\n",
-                   limit.semi_sharp, limit.levels_refined, limit.sharpness_left,
-                   static_cast<long long>(options.max_resolve_faces));
+      warnf("subdiv: warning: %s at or next to semi-sharp features still unresolved after %s (sharpness up to %g "
+            "left), as far as the closed-form masks refine (the next level would pass %lld faces): written at their "
+            "position there, not at the limit\n",
+            which.c_str(), levels_refined.c_str(), limit.sharpness_left,
+            static_cast<long long>(options.max_resolve_faces));
   }
-  if (const Index other = limit.approximated - limit.semi_sharp; other > 0) {
+  const Index other = limit.approximated - limit.semi_sharp;
+  if (other > 0) {
     if (generic)
-      warnf(
-                   "subdiv: warning: %d vertices match no canonical configuration (darts, non-manifold vertices, "
-                   "interior creases between single faces, interior vertices of two triangles, or another "
-                   "extraordinary vertex within the masks' neighbourhood, which more --isolation-levels separate): "
-                   "written at their position after %d levels, not at the limit\n",
-                   other, limit.levels_refined);
+      warnf("subdiv: warning: %s no canonical configuration (darts, non-manifold vertices, interior creases "
+            "between single faces, interior vertices of two triangles, or another extraordinary vertex within the "
+            "masks' neighbourhood, which more --isolation-levels separate): written at their position after %s, "
+            "not at the limit\n",
+            count_of(other, "vertex matches", "vertices match").c_str(), levels_refined.c_str());
     else
-      warnf(
-                   "subdiv: warning: %d vertices have no closed form and match no canonical configuration "
-                   "(non-manifold or inconsistently oriented neighbourhoods): written at their position after %d "
-                   "levels, not at the limit\n",
-                   other, limit.levels_refined);
+      warnf("subdiv: warning: %s no closed form and %s no canonical configuration (non-manifold or "
+            "inconsistently oriented neighbourhoods): written at their position after %s, not at the limit\n",
+            count_of(other, "vertex has", "vertices have").c_str(), other == 1 ? "matches" : "match",
+            levels_refined.c_str());
   }
-  if (opt.normals) {
-    const auto undefined = std::count_if(limit.normals.begin(), limit.normals.end(),
-                                         [](const Vec3& n) { return !(norm(n) > 0.0); });
-    if (undefined > 0)
-      warnf(
-                   "subdiv: warning: %ld vertices have no limit normal (no tangent plane there, or no tangent "
-                   "masks for their configuration): written as vn 0 0 0\n",
-                   static_cast<long>(undefined));
-  }
+  const auto no_normal = opt.normals ? std::count_if(limit.normals.begin(), limit.normals.end(),
+                                                     [](const Vec3& n) { return !(norm(n) > 0.0); })
+                                     : 0;
+  if (no_normal > 0)
+    warnf("subdiv: warning: %s no limit normal (no tangent plane there, or no tangent masks for their "
+          "configuration): written as vn 0 0 0\n",
+          count_of(no_normal, "vertex has", "vertices have").c_str());
   const bool closed = std::any_of(limit.sources.begin(), limit.sources.end(),
                                   [](LimitSource s) { return s == LimitSource::closed_form; });
+  if (opt.report.json) {
+    print_json({{"command", "limit"},
+                {"input", opt.input},
+                {"output", opt.output},
+                {"scheme", name},
+                {"levels", opt.levels},
+                {"masks", closed ? "closed-form" : "generic"},
+                {"vertices", out.vertex_count()},
+                {"at_limit", out.vertex_count() - limit.approximated},
+                {"semi_sharp_unresolved", limit.semi_sharp},
+                {"no_configuration", other},
+                {"levels_refined", limit.levels_refined},
+                {"normals", opt.normals},
+                {"no_normal", no_normal},
+                {"seconds", clock.json()}});
+    return kExitOk;
+  }
+  if (opt.report.stats) std::printf("%s\n", clock.text().c_str());
   // The summary counts what the warnings count.
-  const std::string short_of =
-      limit.approximated > 0 ? ", " + std::to_string(limit.approximated) + " at their positions after " +
-                                   std::to_string(limit.levels_refined) + " levels"
-                             : std::string();
+  const std::string short_of = limit.approximated > 0 ? ", " + std::to_string(limit.approximated) +
+                                                            " at their positions after " + levels_refined
+                                                      : std::string();
+  const std::string vertices = count_of(out.vertex_count(), "vertex", "vertices");
   const std::string at_limit = limit.approximated > 0
-                                   ? std::to_string(out.vertex_count()) + " vertices, " +
-                                         std::to_string(out.vertex_count() - limit.approximated) + " at"
-                                   : std::to_string(out.vertex_count()) + " vertices at";
+                                   ? vertices + ", " + std::to_string(out.vertex_count() - limit.approximated) + " at"
+                                   : vertices + " at";
   std::printf("wrote %s: %s their %s limit positions (%s masks)%s%s\n", opt.output.c_str(), at_limit.c_str(),
-              std::string(scheme->name).c_str(), closed ? "closed-form" : "generic", short_of.c_str(),
+              name.c_str(), closed ? "closed-form" : "generic", short_of.c_str(),
               opt.normals ? ", with limit normals" : "");
   return kExitOk;
 }
@@ -150,29 +182,21 @@ Command add_limit_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("limit", "Move every vertex to its limit position under a scheme");
   cmd->add_option("input", opt->input, "Mesh (.obj, .ply or .off)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
-  cmd->add_option("-s,--scheme", opt->scheme, "Scheme (see 'subdiv schemes')")->capture_default_str();
+  add_refinement_options(*cmd, opt->refinement, "Scheme (see 'subdiv schemes')");
   cmd->add_option("-l,--levels", opt->levels,
                   "Refine this many levels first and write the refined mesh, every vertex at its limit")
       ->capture_default_str()
       ->check(CLI::Range(0, 8));
   cmd->add_option("--masks", opt->masks,
-                  "closed-form (catmull-clark, loop, loop-warren; other schemes use generic) or generic "
-                  "(eigenvectors of the local subdivision matrix)")
-      ->capture_default_str()
+                  "closed-form (" + closed_form_scheme_names() + ": their default) or generic (eigenvectors of the "
+                  "local subdivision matrix: every other scheme's default)")
       ->check(CLI::IsMember({"closed-form", "generic"}));
   cmd->add_option("--isolation-levels", opt->isolation_levels,
-                  "Generic masks: refinement steps before they apply (makes faces uniform, separates "
+                  "Generic masks: refinement steps before they apply (default 2; makes faces uniform, separates "
                   "extraordinary vertices)")
-      ->capture_default_str()
       ->check(CLI::Range(0, 6));
-  cmd->add_option("--boundary", opt->boundary, "Boundary interpolation, overriding the file's tag")
-      ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
-  cmd->add_option("--crease-method", opt->crease_method, "Semi-sharp crease rule, overriding the file's tag")
-      ->check(CLI::IsMember(crease_method_names()));
   cmd->add_flag("--normals", opt->normals, "Also write limit normals (from the tangent masks)");
-  cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold, "Treat non-manifold elements as sharp");
-  cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
-  add_rule_options(*cmd, opt->rules);
+  add_report_options(*cmd, opt->report, "Print the time of each phase");
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
   cmd->add_flag("--no-memory-check", opt->no_memory_check,
                 "Refine -l levels even when the estimated peak memory exceeds what the machine has available");

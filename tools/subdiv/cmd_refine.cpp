@@ -16,8 +16,9 @@
 #include "input_mesh.h"
 #include "memory_guard.h"
 #include "output_checks.h"
-#include "rule_options.h"
-#include "scheme_option.h"
+#include "command_report.h"
+#include "refinement_options.h"
+#include "wording.h"
 #include "subdiv/core/error.h"
 #include "subdiv/curves/curve_scheme.h"
 #include "subdiv/io/mesh_io.h"
@@ -31,72 +32,27 @@ namespace {
 struct RefineCommandOptions {
   std::string input;
   std::string output;
-  std::string scheme = std::string(default_scheme().name);
   int levels = 1;
-  std::string boundary;
-  std::string crease_method;
-  int threads = 0;
-  bool stats = false;
-  bool allow_non_manifold = false;
-  bool triangulate = false;
+  RefinementOptionValues refinement;
+  ReportOptionValues report;
   bool ascii = false;
   bool no_memory_check = false;
-  std::optional<double> tension;
-  RuleOptionValues rules;
-  DegreeOptionValues degree;
-  bool full_steps = false;            // quasi-4-8: -l counts 4-8 steps (two binary steps each)
-  int start_level = 0;                // the level the input is at (splits whose steps alternate)
-  std::string quasi_boundary;         // quasi-4-8: fixed or smoothed
-  std::vector<std::string> creases;  // --crease A,B: infinitely sharp edge tags
+  bool full_steps = false;  // quasi-4-8: -l counts 4-8 steps (two binary steps each)
+  int start_level = 0;      // the level the input is at (splits whose steps alternate)
 };
-
-// --crease A,B: the edge (A, B), 0-based, as an infinitely sharp crease tag.
-CreaseTag parse_crease(const std::string& text, Index vertex_count) {
-  const std::size_t comma = text.find(',');
-  long long v[2] = {-1, -1};
-  bool ok = comma != std::string::npos;
-  for (int i = 0; ok && i < 2; ++i) {
-    const std::string part = i == 0 ? text.substr(0, comma) : text.substr(comma + 1);
-    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v[i]);
-    ok = !part.empty() && ec == std::errc() && end == part.data() + part.size();
-  }
-  if (!ok) throw InvalidInputError("--crease " + text + ": expected A,B with two 0-based vertex indices");
-  for (const long long x : v)
-    if (x < 0 || x >= vertex_count)
-      throw InvalidInputError("--crease " + text + ": vertex " + std::to_string(x) + " is not in the mesh (" +
-                              std::to_string(vertex_count) + " vertices)");
-  return {static_cast<Index>(v[0]), static_cast<Index>(v[1]), kInfiniteSharpness};
-}
-
-/// The options only surface schemes read; a curve scheme refuses them
-/// rather than ignore them.
-const char* surface_option_given(const RefineCommandOptions& opt) {
-  if (!opt.boundary.empty()) return "--boundary";
-  if (!opt.crease_method.empty()) return "--crease-method";
-  if (opt.allow_non_manifold) return "--allow-non-manifold";
-  if (opt.triangulate) return "--triangulate";
-  if (opt.rules.boundary_rules != "standard") return "--boundary-rules";
-  if (opt.rules.corner_angles != "fixed") return "--corner-angles";
-  if (opt.rules.flatness) return "--flatness";
-  if (!opt.rules.corners.empty()) return "--corner";
-  if (opt.degree.degree) return "--degree";
-  if (!opt.degree.alpha.empty() || !opt.degree.beta.empty()) return "--alpha/--beta";
-  if (!opt.degree.valence_weights.empty()) return "--valence-weights";
-  if (!opt.creases.empty()) return "--crease";
-  if (opt.full_steps) return "--full-steps";
-  if (opt.start_level != 0) return "--start-level";
-  if (!opt.quasi_boundary.empty()) return "--quasi-boundary";
-  return nullptr;
-}
 
 // Every polyline of the file refined on its own; the output holds the refined
 // points of each polyline in turn and one `l` line per polyline.
 int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& opt) {
   const std::string name(registered.name);
-  if (const char* option = surface_option_given(opt))
+  const char* option = surface_option_given(opt.refinement);
+  if (!option && opt.full_steps) option = "--full-steps";
+  if (!option && opt.start_level != 0) option = "--start-level";
+  if (option)
     throw InvalidInputError(std::string(option) + " applies to surface schemes, not to the curve scheme " + name);
-  const CurveScheme scheme = with_tension(registered, opt.tension);
+  const CurveScheme scheme = with_tension(registered, opt.refinement.tension);
   check_output_path(opt.input, opt.output);
+  check_ascii_applies(opt.ascii, opt.output);
   if (format_from_path(opt.output) != FileFormat::obj)
     throw InvalidInputError(opt.output + ": " + to_string(format_from_path(opt.output)) +
                             " has no place for polylines; write the refined curves to an .obj file");
@@ -113,7 +69,8 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
     warnf("subdiv: warning: %s: vertex channels and tags are not carried through curve refinement\n",
                  opt.input.c_str());
 
-  const auto start = std::chrono::steady_clock::now();
+  PhaseClock clock;
+  clock.lap("read");
   PolygonMesh result;
   for (std::size_t l = 0; l < mesh.polylines.size(); ++l) {
     const MeshPolyline& in = mesh.polylines[l];
@@ -137,25 +94,36 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
     }
     result.polylines.push_back(std::move(out));
   }
-  const auto write_start = std::chrono::steady_clock::now();
+  clock.lap("refine");
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
   print_warnings(opt.output, write_mesh(result, opt.output, wopt));
-  if (opt.stats) {
-    std::printf("curve scheme %s, %d levels", name.c_str(), opt.levels);
+  clock.lap("write");
+  std::vector<long long> points(static_cast<std::size_t>(opt.levels) + 1, 0);
+  for (int level = 0; level <= opt.levels; ++level)
+    for (const MeshPolyline& p : mesh.polylines)
+      points[static_cast<std::size_t>(level)] +=
+          refined_point_count(scheme, static_cast<Index>(p.vertices.size()), p.closed, level);
+  if (opt.report.json) {
+    nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+    for (int level = 0; level <= opt.levels; ++level)
+      levels.push_back({{"level", level}, {"points", points[static_cast<std::size_t>(level)]},
+                        {"polylines", mesh.polylines.size()}});
+    print_json({{"command", "refine"}, {"input", opt.input}, {"output", opt.output}, {"scheme", name},
+                {"tension", scheme.tension}, {"levels", levels}, {"seconds", clock.json()}});
+    return kExitOk;
+  }
+  if (opt.report.stats) {
+    std::printf("curve scheme %s, %s", name.c_str(), count_of(opt.levels, "level", "levels").c_str());
     if (scheme.tension != 0.0) std::printf(", tension %g", scheme.tension);
     std::printf("\n");
-    for (int level = 0; level <= opt.levels; ++level) {
-      long long points = 0;
-      for (const MeshPolyline& p : mesh.polylines)
-        points += refined_point_count(scheme, static_cast<Index>(p.vertices.size()), p.closed, level);
-      std::printf("level %d: %lld points, %zu polylines\n", level, points, mesh.polylines.size());
-    }
-    std::printf("refine %.3f s, write %.3f s\n", std::chrono::duration<double>(write_start - start).count(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - write_start).count());
+    for (int level = 0; level <= opt.levels; ++level)
+      std::printf("level %d: %s, %s\n", level, count_of(points[static_cast<std::size_t>(level)], "point", "points").c_str(),
+                  count_of(static_cast<std::int64_t>(mesh.polylines.size()), "polyline", "polylines").c_str());
+    std::printf("%s\n", clock.text().c_str());
   }
-  std::printf("wrote %s: %d vertices, %zu polylines\n", opt.output.c_str(), result.vertex_count(),
-              result.polylines.size());
+  std::printf("wrote %s: %s, %s\n", opt.output.c_str(), count_of(result.vertex_count(), "vertex", "vertices").c_str(),
+              count_of(static_cast<std::int64_t>(result.polylines.size()), "polyline", "polylines").c_str());
   return kExitOk;
 }
 
@@ -177,87 +145,90 @@ void warn_if_level_matters(const Scheme& scheme, const PolygonMesh& input, const
 }
 
 int run_refine(const RefineCommandOptions& opt) {
-  const Scheme* registered = find_scheme(opt.scheme);
-  if (!registered) {
-    if (const CurveScheme* curve = find_curve_scheme(opt.scheme)) return run_curve_refine(*curve, opt);
-    throw_unknown_scheme(opt.scheme, true);
+  if (!find_scheme(opt.refinement.scheme)) {
+    if (const CurveScheme* curve = find_curve_scheme(opt.refinement.scheme)) return run_curve_refine(*curve, opt);
+    throw_unknown_scheme(opt.refinement.scheme, true);
   }
-  Scheme chosen = with_degree_options(with_tension(*registered, opt.tension), opt.degree);
-  const Scheme* scheme = &chosen;
+  const Scheme scheme = chosen_scheme(opt.refinement);
+  const std::string name(scheme.name);
   check_output_path(opt.input, opt.output);
+  check_ascii_applies(opt.ascii, opt.output);
+  const bool quasi = scheme.split == SplitRule::quasi_4_8;
+  if (!quasi && opt.full_steps) throw InvalidInputError("--full-steps applies to quasi-4-8, not to " + name);
+  if (opt.start_level != 0 && !steps_alternate(scheme.split))
+    throw InvalidInputError(fmt::format("--start-level applies to the {}, whose steps alternate with the level, not "
+                                        "to the {} of {}",
+                                        to_string(SplitRule::sqrt3), to_string(scheme.split), name));
 
+  PhaseClock clock;
   MeshFile file = read_mesh(opt.input);
   print_warnings(opt.input, file.warnings);
   if (!file.mesh.polylines.empty()) {
     if (file.mesh.face_count() == 0)
-      throw InvalidInputError(opt.input + ": no faces for the surface scheme " + opt.scheme + " to refine; its " +
-                              std::to_string(file.mesh.polylines.size()) + " polylines need a curve scheme (" +
-                              curve_scheme_names() + ")");
-    warnf("subdiv: warning: %s: %zu polylines are not refined by a surface scheme: not written\n",
-                 opt.input.c_str(), file.mesh.polylines.size());
+      throw InvalidInputError(opt.input + ": no faces for the surface scheme " + name + " to refine; its " +
+                              count_of(static_cast<std::int64_t>(file.mesh.polylines.size()), "polyline", "polylines") +
+                              " need a curve scheme (" + curve_scheme_names() + ")");
+    warnf("subdiv: warning: %s: %s not refined by a surface scheme: not written\n", opt.input.c_str(),
+          count_of(static_cast<std::int64_t>(file.mesh.polylines.size()), "polyline is", "polylines are").c_str());
   }
-  triangulate_if_asked(*scheme, opt.triangulate, file);
-
-  const bool quasi = scheme->split == SplitRule::quasi_4_8;
-  if (!quasi && opt.full_steps) throw InvalidInputError("--full-steps applies to quasi-4-8, not to " + opt.scheme);
-  if (!quasi && !opt.quasi_boundary.empty())
-    throw InvalidInputError("--quasi-boundary applies to quasi-4-8, not to " + opt.scheme);
   RefineOptions options;
-  apply_rule_options(opt.rules, file.mesh, options);
-  for (const std::string& text : opt.creases)
-    file.mesh.tags.creases.push_back(parse_crease(text, file.mesh.vertex_count()));
+  apply_refinement_options(opt.refinement, scheme, file, options);
   options.levels = opt.full_steps ? 2 * opt.levels : opt.levels;
-  if (opt.start_level != 0 && !steps_alternate(scheme->split))
-    throw InvalidInputError(fmt::format("--start-level applies to the {}, whose steps alternate with the level, not "
-                                        "to the {} of {}",
-                                        to_string(SplitRule::sqrt3), to_string(scheme->split), opt.scheme));
   options.start_level = opt.start_level;
   if (options.levels > 0) {
     warn_dropped_tags(opt.input, file.mesh.tags);
     drop_input_normals(opt.input, file.mesh);
   }
-  if (opt.quasi_boundary == "smoothed") std::get<Quasi48Parameters>(chosen.parameters).boundary = Quasi48Boundary::smoothed;
-  options.allow_non_manifold = opt.allow_non_manifold;
-  options.threads = opt.threads;
-  if (opt.boundary == "edge-only") options.boundary = BoundaryInterpolation::edge_only;
-  else if (opt.boundary == "edge-and-corner") options.boundary = BoundaryInterpolation::edge_and_corner;
-  if (const auto method = crease_method_named(opt.crease_method)) options.crease_method = *method;
+  clock.lap("read");
 
-  using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
+  using steady = std::chrono::steady_clock;
+  const auto start = steady::now();
   auto last = start;
-  std::vector<std::string> stats;
+  nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+  levels.push_back({{"level", 0}, {"vertices", file.mesh.vertex_count()}, {"faces", file.mesh.face_count()},
+                    {"seconds", 0.0}});
   options.on_level = [&](int level, const PolygonMesh& mesh) {
-    const auto now = clock::now();
+    const auto now = steady::now();
     const double seconds = std::chrono::duration<double>(now - last).count();
     last = now;
-    const std::string line = fmt::format("level {}: {} vertices, {} faces, {:.3f} s", level, mesh.vertex_count(),
-                                         mesh.face_count(), seconds);
-    stats.push_back(line);
+    levels.push_back({{"level", level}, {"vertices", mesh.vertex_count()}, {"faces", mesh.face_count()},
+                      {"seconds", seconds}});
     // Progress for long runs only, so that quick runs stay quiet.
-    if (std::chrono::duration<double>(now - start).count() > 1.0) progressf("subdiv: %s\n", line.c_str());
+    if (std::chrono::duration<double>(now - start).count() > 1.0)
+      progressf("subdiv: level %d: %s, %s, %.3f s\n", level, count_of(mesh.vertex_count(), "vertex", "vertices").c_str(),
+                count_of(mesh.face_count(), "face", "faces").c_str(), seconds);
   };
-  check_refinable(file.mesh, *scheme, options, &file.lines);  // bad input first, then its size
-  check_fits_in_memory(file.mesh, *scheme, options.levels, opt.no_memory_check, "refine");
-  const PolygonMesh result = refine(file.mesh, *scheme, options, &file.lines);
+  check_refinable(file.mesh, scheme, options, &file.lines);  // bad input first, then its size
+  check_fits_in_memory(file.mesh, scheme, options.levels, opt.no_memory_check, "refine");
+  const PolygonMesh result = refine(file.mesh, scheme, options, &file.lines);
+  clock.lap("refine");
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
-  const auto write_start = clock::now();
   print_warnings(opt.output, write_mesh(result, opt.output, wopt));
-  warn_if_level_matters(*scheme, file.mesh, options, opt.output);
-  if (opt.stats) {
-    std::printf("scheme %s, %d levels, threads %s\n", std::string(scheme->name).c_str(), options.levels,
-                opt.threads > 0 ? std::to_string(opt.threads).c_str() : "all");
-    std::printf("level 0: %d vertices, %d faces\n", file.mesh.vertex_count(), file.mesh.face_count());
-    for (const auto& s : stats) std::printf("%s\n", s.c_str());
-    std::printf("refine %.3f s, write %.3f s\n", std::chrono::duration<double>(write_start - start).count(),
-                std::chrono::duration<double>(clock::now() - write_start).count());
+  clock.lap("write");
+  warn_if_level_matters(scheme, file.mesh, options, opt.output);
+  if (opt.report.json) {
+    print_json({{"command", "refine"}, {"input", opt.input}, {"output", opt.output}, {"scheme", name},
+                {"threads", opt.refinement.threads}, {"levels", levels}, {"seconds", clock.json()}});
+    return kExitOk;
   }
-  std::printf("wrote %s: %d vertices, %d faces\n", opt.output.c_str(), result.vertex_count(), result.face_count());
+  if (opt.report.stats) {
+    std::printf("scheme %s, %s, threads %s\n", name.c_str(), count_of(options.levels, "level", "levels").c_str(),
+                opt.refinement.threads > 0 ? std::to_string(opt.refinement.threads).c_str() : "all");
+    for (const nlohmann::ordered_json& level : levels) {
+      std::printf("level %d: %s, %s", level["level"].get<int>(),
+                  count_of(level["vertices"].get<std::int64_t>(), "vertex", "vertices").c_str(),
+                  count_of(level["faces"].get<std::int64_t>(), "face", "faces").c_str());
+      if (level["level"].get<int>() > 0) std::printf(", %.3f s", level["seconds"].get<double>());
+      std::printf("\n");
+    }
+    std::printf("%s\n", clock.text().c_str());
+  }
+  std::printf("wrote %s: %s, %s\n", opt.output.c_str(), count_of(result.vertex_count(), "vertex", "vertices").c_str(),
+              count_of(result.face_count(), "face", "faces").c_str());
   return kExitOk;
 }
-
 
 }  // namespace
 
@@ -266,38 +237,17 @@ Command add_refine_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("refine", "Uniformly refine a mesh with a subdivision scheme");
   cmd->add_option("input", opt->input, "Mesh to refine (.obj, .ply or .off)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
-  cmd->add_option("-s,--scheme", opt->scheme, "Scheme, surface or curve (see 'subdiv schemes')")->capture_default_str();
-  cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
-  add_degree_options(*cmd, opt->degree);
+  add_refinement_options(*cmd, opt->refinement, "Scheme, surface or curve (see 'subdiv schemes')");
   cmd->add_option("-l,--levels", opt->levels, "Refinement steps (quasi-4-8: binary steps, see --full-steps)")
       ->capture_default_str()
       ->check(CLI::Range(0, 12));
-  cmd->add_option("--boundary", opt->boundary,
-                  "Boundary interpolation, overriding the file's tag (default: the tag, else edge-and-corner)")
-      ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
-  cmd->add_option("--crease-method", opt->crease_method,
-                  "Semi-sharp crease rule, overriding the file's creasemethod tag (default: the tag, else uniform)")
-      ->check(CLI::IsMember(crease_method_names()));
-  cmd->add_option("--threads", opt->threads, "Worker threads (0 = all cores); results do not depend on it")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
-  cmd->add_flag("--stats", opt->stats, "Print counts and timings per level");
-  cmd->add_flag("--allow-non-manifold", opt->allow_non_manifold,
-                "Refine non-manifold or inconsistently oriented meshes, treating those elements as sharp");
-  cmd->add_flag("--triangulate", opt->triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
-  add_rule_options(*cmd, opt->rules);
-  cmd->add_option("--crease", opt->creases,
-                  "Tag edge A,B (0-based vertices) as infinitely sharp (repeatable); quasi-4-8 does not smooth it")
-      ->type_name("A,B");
+  add_report_options(*cmd, opt->report, "Print counts and timings per level");
   cmd->add_option("--start-level", opt->start_level,
                   "The level the input is at (default 0, a control mesh); the sqrt3 split's boundary rule "
                   "alternates with the level, so a mesh refined to an odd level continues with this")
       ->check(CLI::Range(0, 64));
   cmd->add_flag("--full-steps", opt->full_steps,
                 "quasi-4-8: -l counts 4-8 steps, two binary steps each (default: binary steps)");
-  cmd->add_option("--quasi-boundary", opt->quasi_boundary,
-                  "quasi-4-8: boundary vertices fixed (default) or the boundary polygon smoothed")
-      ->check(CLI::IsMember({"fixed", "smoothed"}));
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
   cmd->add_flag("--no-memory-check", opt->no_memory_check,
                 "Refine even when the estimated peak memory exceeds what the machine has available");

@@ -32,17 +32,28 @@ std::int64_t estimated_peak_bytes(const PolygonMesh& mesh, const Scheme& scheme,
   return 2 * bytes;
 }
 
+std::int64_t estimated_adaptive_peak_bytes(const PolygonMesh& mesh, const Scheme& scheme, int levels) {
+  const int counted = scheme.fast_path.two_steps ? (levels + 1) / 2 : levels;
+  std::int64_t bytes = 0;
+  for (const LevelCost& level : level_costs(mesh, scheme, counted)) bytes += level.bytes;
+  return kAdaptivePeakFactor * bytes;
+}
+
+void check_fits_in_memory(std::int64_t needed, bool unchecked, const std::string& work) {
+  if (unchecked) return;
+  const std::optional<std::int64_t> available = available_memory();
+  if (!available || needed <= *available) return;
+  throw InvalidInputError(fmt::format("{} needs about {} of memory, but {} is available; ask for less, or run it "
+                                      "anyway with --no-memory-check",
+                                      work, format_bytes(static_cast<double>(needed)),
+                                      format_bytes(static_cast<double>(*available))));
+}
+
 void check_fits_in_memory(const PolygonMesh& mesh, const Scheme& scheme, int levels, bool unchecked,
                           const std::string& command) {
   if (unchecked || levels <= 0) return;
-  const std::optional<std::int64_t> available = available_memory();
-  if (!available) return;
-  const std::int64_t needed = estimated_peak_bytes(mesh, scheme, levels);
-  if (needed <= *available) return;
-  throw InvalidInputError(fmt::format("{} to level {} needs about {} of memory while refining, but {} is available; "
-                                      "refine fewer levels, or run it anyway with --no-memory-check",
-                                      command, levels, format_bytes(static_cast<double>(needed)),
-                                      format_bytes(static_cast<double>(*available))));
+  check_fits_in_memory(estimated_peak_bytes(mesh, scheme, levels), false,
+                       fmt::format("{} to level {}", command, levels));
 }
 
 std::string format_bytes(double bytes) {

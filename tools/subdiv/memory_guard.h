@@ -22,6 +22,18 @@ std::optional<std::int64_t> available_memory();
 /// alive while it is made (measured peaks: 1.8-2.0x; BENCHMARKS.md).
 std::int64_t estimated_peak_bytes(const PolygonMesh& mesh, const Scheme& scheme, int levels);
 
+/// About how many bytes adaptive refinement holds when it refines `levels`
+/// uniform steps: every level stays alive with its topology and distances,
+/// kAdaptivePeakFactor times the levels' mesh arrays together (measured 7.4-8.8x:
+/// BENCHMARKS.md, "Memory").
+inline constexpr std::int64_t kAdaptivePeakFactor = 9;
+std::int64_t estimated_adaptive_peak_bytes(const PolygonMesh& mesh, const Scheme& scheme, int levels);
+
+/// Throws InvalidInputError naming `work` ("refine to level 9"), the bytes
+/// `needed` and the available memory when they do not fit; does nothing
+/// when `unchecked` or the available memory is unknown.
+void check_fits_in_memory(std::int64_t needed, bool unchecked, const std::string& work);
+
 /// Throws InvalidInputError, naming `command`, the estimate and the
 /// available memory, when the estimate exceeds it; does nothing when
 /// `unchecked` (--no-memory-check) or the available memory is unknown.

@@ -16,6 +16,12 @@ void check_output_path(const std::string& input, const std::string& output) {
     throw InvalidInputError(output + ": output is the input file; choose another name (inputs are never modified)");
 }
 
+void check_ascii_applies(bool ascii, const std::string& output) {
+  if (ascii && format_from_path(output) != FileFormat::ply)
+    throw InvalidInputError("--ascii applies to PLY output, not to " + output + " (" +
+                            to_string(format_from_path(output)) + " is text already)");
+}
+
 namespace {
 bool quiet_ = false;
 std::vector<std::string> pending_;  // warnings of the running command

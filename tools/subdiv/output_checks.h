@@ -11,6 +11,10 @@ namespace subdiv::cli {
 /// same file as `input` (inputs are never modified).
 void check_output_path(const std::string& input, const std::string& output);
 
+/// Throws InvalidInputError when --ascii is given for an output that is not
+/// PLY (the only format with a binary encoding).
+void check_ascii_applies(bool ascii, const std::string& output);
+
 /// -q: warnings and progress lines are not printed; errors always are.
 void set_quiet(bool quiet);
 bool quiet();

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "wording.h"
+
 namespace subdiv::cli {
 
 namespace {
@@ -75,7 +77,8 @@ std::string format_tags(const Tags& tags) {
 std::string format_validation(const ValidationReport& report, const std::string& path, std::size_t max_listed) {
   std::string out;
   if (report.error_count() == 0 && report.warning_count() == 0) return "validation      ok\n";
-  out += fmt::format("validation      {} errors, {} warnings\n", report.error_count(), report.warning_count());
+  out += fmt::format("validation      {}, {}\n", count_of(static_cast<std::int64_t>(report.error_count()), "error", "errors"),
+                     count_of(static_cast<std::int64_t>(report.warning_count()), "warning", "warnings"));
   for (int k = 0; k < kIssueKindCount; ++k) {
     const auto kind = static_cast<IssueKind>(k);
     if (report.count(kind) > 0)

@@ -67,6 +67,11 @@ void add_rule_options(CLI::App& cmd, RuleOptionValues& values) {
 }
 
 void apply_rule_options(const RuleOptionValues& values, PolygonMesh& mesh, RefineOptions& options) {
+  if (values.boundary_rules != "piecewise-smooth") {
+    if (values.flatness) throw InvalidInputError("--flatness applies to --boundary-rules piecewise-smooth");
+    if (values.corner_angles != "fixed")
+      throw InvalidInputError("--corner-angles applies to --boundary-rules piecewise-smooth");
+  }
   options.boundary_rules =
       values.boundary_rules == "piecewise-smooth" ? BoundaryRules::piecewise_smooth : BoundaryRules::standard;
   options.corner_angles = values.corner_angles == "measured" ? CornerAngles::measured : CornerAngles::fixed;

@@ -1,0 +1,99 @@
+#include "refinement_options.h"
+
+#include <charconv>
+#include <variant>
+
+#include "input_mesh.h"
+#include "subdiv/core/error.h"
+#include "subdiv/rules/quasi_4_8.h"
+
+namespace subdiv::cli {
+
+namespace {
+
+// --crease A,B: the edge (A, B), 0-based, as an infinitely sharp crease tag.
+CreaseTag parse_crease(const std::string& text, Index vertex_count) {
+  const std::size_t comma = text.find(',');
+  long long v[2] = {-1, -1};
+  bool ok = comma != std::string::npos;
+  for (int i = 0; ok && i < 2; ++i) {
+    const std::string part = i == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v[i]);
+    ok = !part.empty() && ec == std::errc() && end == part.data() + part.size();
+  }
+  if (!ok) throw InvalidInputError("--crease " + text + ": expected A,B with two 0-based vertex indices");
+  for (const long long x : v)
+    if (x < 0 || x >= vertex_count)
+      throw InvalidInputError("--crease " + text + ": vertex " + std::to_string(x) + " is not in the mesh (" +
+                              std::to_string(vertex_count) + " vertices)");
+  return {static_cast<Index>(v[0]), static_cast<Index>(v[1]), kInfiniteSharpness};
+}
+
+}  // namespace
+
+void add_refinement_options(CLI::App& cmd, RefinementOptionValues& values, const std::string& scheme_help) {
+  cmd.add_option("-s,--scheme", values.scheme, scheme_help)->capture_default_str();
+  cmd.add_option("--tension", values.tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
+  add_degree_options(cmd, values.degree);
+  cmd.add_option("--quasi-boundary", values.quasi_boundary,
+                 "quasi-4-8: boundary vertices fixed (default) or the boundary polygon smoothed")
+      ->check(CLI::IsMember({"fixed", "smoothed"}));
+  cmd.add_option("--boundary", values.boundary,
+                 "Boundary interpolation, overriding the file's tag (default: the tag, else edge-and-corner)")
+      ->check(CLI::IsMember({"edge-only", "edge-and-corner"}));
+  cmd.add_option("--crease-method", values.crease_method,
+                 "Semi-sharp crease rule, overriding the file's creasemethod tag (default: the tag, else uniform)")
+      ->check(CLI::IsMember(crease_method_names()));
+  add_rule_options(cmd, values.rules);
+  cmd.add_option("--crease", values.creases,
+                 "Tag edge A,B (0-based vertices) as infinitely sharp (repeatable); quasi-4-8 does not smooth it")
+      ->type_name("A,B");
+  cmd.add_flag("--allow-non-manifold", values.allow_non_manifold,
+               "Accept non-manifold or inconsistently oriented meshes, treating those elements as sharp");
+  cmd.add_flag("--triangulate", values.triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
+  cmd.add_option("--threads", values.threads, "Worker threads (0 = all cores); results do not depend on it")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
+}
+
+Scheme chosen_scheme(const RefinementOptionValues& values) {
+  Scheme chosen = with_degree_options(with_tension(scheme_named(values.scheme), values.tension), values.degree);
+  if (!values.quasi_boundary.empty()) {
+    auto* quasi = std::get_if<Quasi48Parameters>(&chosen.parameters);
+    if (!quasi) throw InvalidInputError("--quasi-boundary applies to quasi-4-8, not to " + values.scheme);
+    quasi->boundary = values.quasi_boundary == "smoothed" ? Quasi48Boundary::smoothed : Quasi48Boundary::fixed;
+  }
+  return chosen;
+}
+
+void apply_refinement_options(const RefinementOptionValues& values, const Scheme& scheme, MeshFile& file,
+                              RefineOptions& options) {
+  triangulate_if_asked(scheme, values.triangulate, file);
+  apply_rule_options(values.rules, file.mesh, options);
+  for (const std::string& text : values.creases)
+    file.mesh.tags.creases.push_back(parse_crease(text, file.mesh.vertex_count()));
+  options.allow_non_manifold = values.allow_non_manifold;
+  options.threads = values.threads;
+  if (values.boundary == "edge-only") options.boundary = BoundaryInterpolation::edge_only;
+  else if (values.boundary == "edge-and-corner") options.boundary = BoundaryInterpolation::edge_and_corner;
+  if (const auto method = crease_method_named(values.crease_method)) options.crease_method = *method;
+}
+
+const char* surface_option_given(const RefinementOptionValues& values) {
+  if (!values.boundary.empty()) return "--boundary";
+  if (!values.crease_method.empty()) return "--crease-method";
+  if (values.allow_non_manifold) return "--allow-non-manifold";
+  if (values.triangulate) return "--triangulate";
+  if (values.rules.boundary_rules != "standard") return "--boundary-rules";
+  if (values.rules.corner_angles != "fixed") return "--corner-angles";
+  if (values.rules.flatness) return "--flatness";
+  if (!values.rules.corners.empty()) return "--corner";
+  if (values.degree.degree) return "--degree";
+  if (!values.degree.alpha.empty() || !values.degree.beta.empty()) return "--alpha/--beta";
+  if (!values.degree.valence_weights.empty()) return "--valence-weights";
+  if (!values.creases.empty()) return "--crease";
+  if (!values.quasi_boundary.empty()) return "--quasi-boundary";
+  return nullptr;
+}
+
+}  // namespace subdiv::cli
