@@ -86,8 +86,8 @@ std::vector<std::string> write_mesh(const PolygonMesh& mesh, const std::filesyst
   std::string data;
   switch (format) {
     case FileFormat::obj: data = format_obj(mesh, options, &warnings); break;
-    case FileFormat::ply: data = format_ply(mesh, options.ply_encoding, &warnings); break;
-    case FileFormat::off: data = format_off(mesh, &warnings); break;
+    case FileFormat::ply: data = format_ply(mesh, options.ply_encoding, &warnings, options.threads); break;
+    case FileFormat::off: data = format_off(mesh, &warnings, options.threads); break;
   }
   if (format != FileFormat::obj && !mesh.tags.empty() && options.write_tags)
     warnings.push_back(std::string(to_string(format)) + " has no place for tags (creases, corners, holes): not written");

@@ -12,6 +12,7 @@ namespace subdiv {
 
 namespace {
 
+using detail::append_lines;
 using detail::append_number;
 
 void append_tag_header(std::string& out, const char* name, std::size_t ints, std::size_t floats, std::size_t strings) {
@@ -138,53 +139,53 @@ std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options, std
     }
   }
 
-  for (Index v = 0; v < mesh.vertex_count(); ++v) {
-    const Vec3 p = mesh.positions[static_cast<std::size_t>(v)];
-    out += "v ";
-    append_number(out, p.x);
-    out += ' ';
-    append_number(out, p.y);
-    out += ' ';
-    append_number(out, p.z);
+  const int threads = options.threads;
+  append_lines(out, static_cast<std::size_t>(mesh.vertex_count()), threads, [&](std::string& text, std::size_t v) {
+    const Vec3 p = mesh.positions[v];
+    text += "v ";
+    append_number(text, p.x);
+    text += ' ';
+    append_number(text, p.y);
+    text += ' ';
+    append_number(text, p.z);
     if (color) {
-      for (int i = 0; i < 3; ++i) {
-        out += ' ';
-        append_number(out, color->values[static_cast<std::size_t>(v) * 3 + static_cast<std::size_t>(i)]);
+      for (std::size_t i = 0; i < 3; ++i) {
+        text += ' ';
+        append_number(text, color->values[v * 3 + i]);
       }
     }
-    out += '\n';
-  }
+    text += '\n';
+  });
   auto append_values = [&](const FaceVaryingChannel& ch, const char* keyword) {
     const auto k = static_cast<std::size_t>(ch.components);
-    for (std::size_t i = 0; i < ch.values.size(); i += k) {
-      out += keyword;
+    append_lines(out, ch.values.size() / k, threads, [&](std::string& text, std::size_t value) {
+      text += keyword;
       for (std::size_t j = 0; j < k; ++j) {
-        out += ' ';
-        append_number(out, ch.values[i + j]);
+        text += ' ';
+        append_number(text, ch.values[value * k + j]);
       }
-      out += '\n';
-    }
+      text += '\n';
+    });
   };
   if (uv) append_values(*uv, "vt");
   if (normal) append_values(*normal, "vn");
 
-  for (Index f = 0; f < mesh.face_count(); ++f) {
-    out += 'f';
-    for (Index c = mesh.face_offsets[static_cast<std::size_t>(f)]; c < mesh.face_offsets[static_cast<std::size_t>(f) + 1]; ++c) {
-      const auto ci = static_cast<std::size_t>(c);
-      out += ' ';
-      append_number(out, mesh.face_indices[ci] + 1);
+  append_lines(out, static_cast<std::size_t>(mesh.face_count()), threads, [&](std::string& text, std::size_t f) {
+    text += 'f';
+    for (std::size_t c = static_cast<std::size_t>(mesh.face_offsets[f]); c < static_cast<std::size_t>(mesh.face_offsets[f + 1]); ++c) {
+      text += ' ';
+      append_number(text, mesh.face_indices[c] + 1);
       if (uv || normal) {
-        out += '/';
-        if (uv) append_number(out, uv->indices[ci] + 1);
+        text += '/';
+        if (uv) append_number(text, uv->indices[c] + 1);
         if (normal) {
-          out += '/';
-          append_number(out, normal->indices[ci] + 1);
+          text += '/';
+          append_number(text, normal->indices[c] + 1);
         }
       }
     }
-    out += '\n';
-  }
+    text += '\n';
+  });
   // A closed polyline repeats its first vertex at the end (docs/formats.md).
   for (const MeshPolyline& polyline : mesh.polylines) {
     out += 'l';

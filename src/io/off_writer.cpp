@@ -5,7 +5,8 @@
 
 namespace subdiv {
 
-std::string format_off(const PolygonMesh& mesh, std::vector<std::string>* warnings) {
+std::string format_off(const PolygonMesh& mesh, std::vector<std::string>* warnings, int threads) {
+  using detail::append_lines;
   using detail::append_number;
   check_face_arrays(mesh);
   if (warnings) {
@@ -23,22 +24,23 @@ std::string format_off(const PolygonMesh& mesh, std::vector<std::string>* warnin
   out += ' ';
   append_number(out, mesh.face_count());
   out += " 0\n";
-  for (const Vec3& p : mesh.positions) {
-    append_number(out, p.x);
-    out += ' ';
-    append_number(out, p.y);
-    out += ' ';
-    append_number(out, p.z);
-    out += '\n';
-  }
-  for (Index f = 0; f < mesh.face_count(); ++f) {
-    append_number(out, mesh.face_size(f));
-    for (const Index v : mesh.face(f)) {
-      out += ' ';
-      append_number(out, v);
+  append_lines(out, mesh.positions.size(), threads, [&](std::string& text, std::size_t v) {
+    const Vec3& p = mesh.positions[v];
+    append_number(text, p.x);
+    text += ' ';
+    append_number(text, p.y);
+    text += ' ';
+    append_number(text, p.z);
+    text += '\n';
+  });
+  append_lines(out, static_cast<std::size_t>(mesh.face_count()), threads, [&](std::string& text, std::size_t f) {
+    append_number(text, mesh.face_size(static_cast<Index>(f)));
+    for (const Index v : mesh.face(static_cast<Index>(f))) {
+      text += ' ';
+      append_number(text, v);
     }
-    out += '\n';
-  }
+    text += '\n';
+  });
   return out;
 }
 

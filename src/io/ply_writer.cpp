@@ -17,6 +17,7 @@ namespace subdiv {
 
 namespace {
 
+using detail::append_lines;
 using detail::append_number;
 
 /// Shortest text that reads back as the same float.
@@ -62,7 +63,8 @@ class BinaryWriter {
 
 }  // namespace
 
-std::string format_ply(const PolygonMesh& mesh, PlyEncoding encoding, std::vector<std::string>* warnings) {
+std::string format_ply(const PolygonMesh& mesh, PlyEncoding encoding, std::vector<std::string>* warnings,
+                       int threads) {
   check_face_arrays(mesh);
   const auto nv = static_cast<std::size_t>(mesh.vertex_count());
   const Index nf = mesh.face_count();
@@ -109,38 +111,38 @@ std::string format_ply(const PolygonMesh& mesh, PlyEncoding encoding, std::vecto
 
   if (encoding == PlyEncoding::ascii) {
     out.reserve(out.size() + nv * 64 + static_cast<std::size_t>(mesh.corner_count()) * 8);
-    for (std::size_t v = 0; v < nv; ++v) {
+    append_lines(out, nv, threads, [&](std::string& text, std::size_t v) {
       const Vec3 p = mesh.positions[v];
-      append_number(out, p.x);
-      out += ' ';
-      append_number(out, p.y);
-      out += ' ';
-      append_number(out, p.z);
+      append_number(text, p.x);
+      text += ' ';
+      append_number(text, p.y);
+      text += ' ';
+      append_number(text, p.z);
       if (normal)
         for (std::size_t i = 0; i < 3; ++i) {
-          out += ' ';
-          append_float(out, to_float(channel_value(normal, v, i)));
+          text += ' ';
+          append_float(text, to_float(channel_value(normal, v, i)));
         }
       if (uv)
         for (std::size_t i = 0; i < 2; ++i) {
-          out += ' ';
-          append_float(out, to_float(channel_value(uv, v, i)));
+          text += ' ';
+          append_float(text, to_float(channel_value(uv, v, i)));
         }
       if (color)
         for (std::size_t i = 0; i < 3; ++i) {
-          out += ' ';
-          append_number(out, static_cast<int>(color_byte(channel_value(color, v, i))));
+          text += ' ';
+          append_number(text, static_cast<int>(color_byte(channel_value(color, v, i))));
         }
-      out += '\n';
-    }
-    for (Index f = 0; f < nf; ++f) {
-      append_number(out, mesh.face_size(f));
-      for (const Index i : mesh.face(f)) {
-        out += ' ';
-        append_number(out, i);
+      text += '\n';
+    });
+    append_lines(out, static_cast<std::size_t>(nf), threads, [&](std::string& text, std::size_t f) {
+      append_number(text, mesh.face_size(static_cast<Index>(f)));
+      for (const Index i : mesh.face(static_cast<Index>(f))) {
+        text += ' ';
+        append_number(text, i);
       }
-      out += '\n';
-    }
+      text += '\n';
+    });
     return out;
   }
 

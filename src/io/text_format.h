@@ -2,8 +2,15 @@
 // Appending numbers to text output without locale or iostreams: doubles in
 // the shortest form that reads back to the same value.
 
+#include <algorithm>
 #include <charconv>
+#include <cstddef>
 #include <string>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace subdiv::detail {
 
@@ -20,5 +27,36 @@ inline void append_number(std::string& out, long long value) {
 }
 
 inline void append_number(std::string& out, int value) { append_number(out, static_cast<long long>(value)); }
+
+/// Appends the lines of elements [0, count) to `out`, `append_line(text, i)`
+/// writing element i's. Blocks of elements are formatted on up to `threads`
+/// workers (0: all cores) and joined in order, so the text is the same for
+/// every thread count: each block's text depends on its elements alone.
+template <typename AppendLine>
+void append_lines(std::string& out, std::size_t count, int threads, const AppendLine& append_line) {
+  constexpr std::size_t kBlock = 16384;  // elements per block: ~0.5 MB of text
+  if (threads == 1 || count <= kBlock) {
+    for (std::size_t i = 0; i < count; ++i) append_line(out, i);
+    return;
+  }
+  std::vector<std::string> blocks((count + kBlock - 1) / kBlock);
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t b = r.begin(); b < r.end(); ++b) {
+        std::string& text = blocks[b];
+        const std::size_t end = std::min(count, (b + 1) * kBlock);
+        for (std::size_t i = b * kBlock; i < end; ++i) append_line(text, i);
+      }
+    });
+  });
+  std::size_t size = out.size();
+  for (const std::string& text : blocks) size += text.size();
+  out.reserve(size);
+  for (std::string& text : blocks) {
+    out += text;
+    std::string().swap(text);  // release each block once copied
+  }
+}
 
 }  // namespace subdiv::detail

@@ -110,6 +110,7 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  wopt.threads = opt.refinement.threads;
   print_warnings(opt.output, write_mesh(result.mesh, opt.output, wopt));
   clock.lap("write");
   const double worst = result.distances.empty() ? 0.0 : *std::max_element(result.distances.begin(), result.distances.end());

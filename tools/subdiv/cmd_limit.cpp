@@ -102,6 +102,7 @@ int run_limit(const LimitCommandOptions& opt) {
   }
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  wopt.threads = opt.refinement.threads;
   print_warnings(opt.output, write_mesh(out, opt.output, wopt));
   clock.lap("write");
   // Why vertices were left short of the limit, and what would reach it.

@@ -97,6 +97,7 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
   clock.lap("refine");
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  wopt.threads = opt.refinement.threads;
   print_warnings(opt.output, write_mesh(result, opt.output, wopt));
   clock.lap("write");
   std::vector<long long> points(static_cast<std::size_t>(opt.levels) + 1, 0);
@@ -205,6 +206,7 @@ int run_refine(const RefineCommandOptions& opt) {
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  wopt.threads = opt.refinement.threads;
   print_warnings(opt.output, write_mesh(result, opt.output, wopt));
   clock.lap("write");
   warn_if_level_matters(scheme, file.mesh, options, opt.output);

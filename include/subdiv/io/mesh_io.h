@@ -43,6 +43,9 @@ struct WriteOptions {
   /// out (they are not part of the surface), with a note, unless this asks
   /// to write them as ordinary faces. OBJ keeps them, with their tags.
   bool hole_faces_as_faces = false;
+  /// Worker threads formatting text (OBJ, ASCII PLY, OFF); 0: all cores.
+  /// The bytes written are the same for every count.
+  int threads = 0;
 };
 
 /// Writes a mesh to a temporary file next to `path` and renames it into

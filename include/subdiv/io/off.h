@@ -13,6 +13,8 @@ namespace subdiv {
 
 MeshFile parse_off(std::string_view text, const std::string& path = {});
 
-std::string format_off(const PolygonMesh& mesh, std::vector<std::string>* warnings = nullptr);
+/// `threads` format the text in parallel (0: all cores); the bytes do not
+/// depend on it.
+std::string format_off(const PolygonMesh& mesh, std::vector<std::string>* warnings = nullptr, int threads = 0);
 
 }  // namespace subdiv

@@ -16,7 +16,9 @@ namespace subdiv {
 
 MeshFile parse_ply(std::string_view bytes, const std::string& path = {});
 
+/// `threads` format ASCII text in parallel (0: all cores); the bytes do not
+/// depend on it.
 std::string format_ply(const PolygonMesh& mesh, PlyEncoding encoding,
-                       std::vector<std::string>* warnings = nullptr);
+                       std::vector<std::string>* warnings = nullptr, int threads = 0);
 
 }  // namespace subdiv
