@@ -112,6 +112,14 @@ bool collapses_boundary(const LocalSubdivisionMatrix& m, const Eigen::VectorXd& 
   return true;
 }
 
+// The spectrum of the masks' matrix: per Fourier frequency where it is
+// large and rotationally symmetric (see AnalysisOptions::rotation_rows).
+Spectrum mask_spectrum(const LocalSubdivisionMatrix& m, const AnalysisOptions& options) {
+  if (!m.rotate.empty() && m.S.rows() >= options.rotation_rows)
+    return spectrum_by_rotation(m.S, {m.configuration.k, m.rotate}, options.tolerance);
+  return spectrum(m.S, options.tolerance);
+}
+
 // Everything at the configuration itself: Reif's criterion.
 ConfigurationAnalysis analyze_point(const Scheme& scheme, const Configuration& configuration,
                                     const AnalysisOptions& options) {
@@ -129,8 +137,10 @@ ConfigurationAnalysis analyze_point(const Scheme& scheme, const Configuration& c
     a.spectrum = spectrum(a.wide_matrix.S, options.tolerance);
   const auto all = a.spectrum.expanded();
   a.leading.assign(all.begin(), all.begin() + std::min<std::ptrdiff_t>(4, static_cast<std::ptrdiff_t>(all.size())));
-  a.limit_mask = left_eigenvector(a.matrix.S, 1.0, options.tolerance);
-  a.tangent_masks = tangent_masks(a.matrix.S, options.tolerance);
+  if (options.masks) {
+    a.limit_mask = left_eigenvector(a.matrix.S, 1.0, options.tolerance);
+    a.tangent_masks = tangent_masks(a.matrix.S, mask_spectrum(a.matrix, options), options.tolerance);
+  }
 
   const ConditionFailure failure = eigenvalue_condition_failure(a.spectrum, options.tolerance);
   a.eigenvalue_condition = failure.reason.empty();

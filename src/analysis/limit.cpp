@@ -21,6 +21,7 @@
 
 #include "../refine/piecewise_smooth.h"
 #include "closed_form_limit.h"
+#include "local_refinement.h"
 
 namespace subdiv {
 
@@ -541,6 +542,17 @@ int levels_to_resolve(const PolygonMesh& mesh, const Scheme& scheme, int cap) {
   return std::min(levels, cap);
 }
 
+// The face and corner counts of a whole level, which a cut level no longer
+// has: the primal splits' children follow from them.
+struct WholeLevel {
+  std::int64_t faces = 0, corners = 0;
+  WholeLevel child(SplitRule split) const {
+    // Quad split: a quad per corner; triangle split: four triangles a face.
+    if (split == SplitRule::quad) return {corners, 4 * corners};
+    return {4 * faces, 12 * faces};
+  }
+};
+
 }  // namespace
 
 std::optional<std::string> limit_unavailable(const Scheme& scheme) {
@@ -587,11 +599,14 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   Hierarchy hierarchy{{{mesh, options.refine.start_level, std::nullopt}}};
   RefineOptions one = options.refine;
   one.levels = 1;
+  // The closed forms need only the followed vertices' surroundings: each
+  // level is cut down to them (analysis/local_refinement.h), and the face
+  // budget counts the whole level's faces.
+  const bool crop = options.local_levels && closed_form && is_primal(scheme.split) && !scheme.traits.needs_closed_mesh;
+  WholeLevel whole{hierarchy.finest().mesh.face_count(), hierarchy.finest().mesh.corner_count()};
   for (int l = 0; l < levels; ++l) {
     // The closed-form route stops before a level over its face budget.
-    const PolygonMesh& finest = hierarchy.finest().mesh;
-    const std::int64_t child_faces = scheme.split == SplitRule::quad ? std::int64_t{finest.corner_count()}
-                                                                     : 4 * std::int64_t{finest.face_count()};
+    const std::int64_t child_faces = scheme.split == SplitRule::quad ? whole.corners : 4 * whole.faces;
     if (closed_form && !point_split && child_faces > options.max_resolve_faces) {
       levels = l;
       break;
@@ -599,6 +614,16 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
     refine_further(hierarchy, scheme, 1, one, KeepLevels::last);
     const SplitMap& map = *hierarchy.finest().map;
     for (Index& w : where) w = map.vertex_point(w);
+    whole = whole.child(scheme.split);
+    if (crop) {
+      PolygonMesh& level = hierarchy.levels.back().mesh;
+      level = detail::crop_around(level, where, detail::kCropRings);
+      // The cut leaves vertices with separate fans, which refinement treats
+      // as sharp: only outside the rings kept exact.
+      one.allow_non_manifold = true;
+    } else {
+      whole = {hierarchy.finest().mesh.face_count(), hierarchy.finest().mesh.corner_count()};
+    }
   }
   PolygonMesh current = std::move(hierarchy.levels.back().mesh);
 

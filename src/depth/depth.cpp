@@ -48,6 +48,7 @@ bool is_regular(const Scheme& scheme, const Configuration& c) {
 double configuration_rate(const Scheme& scheme, const Configuration& c) {
   AnalysisOptions options;
   options.characteristic_map = false;
+  options.masks = false;  // the rate reads the spectrum alone
   const ConfigurationAnalysis a = analyze(scheme, c, options);
   const std::size_t index = is_regular(scheme, c) ? 3 : 1;
   if (a.leading.size() <= index)

@@ -794,13 +794,9 @@ fi
 # Every command on every shared mesh that refine accepts (meshes under
 # 200 kB, one level), with -q: success, or one stderr line and exit 1; never
 # exit 2, a crash or a run past 30 s. Release builds only (SUBDIV_CLI_SWEEP:
-# under the sanitizers it would take most of CI's time). Left out, as too
-# slow rather than wrong: the valence-360 poles (depth analyses valence 360:
-# minutes) and catmark_rook (semi-sharp creases resolved over 7 levels:
-# 40 s and 2.9 GB for limit and depth).
+# under the sanitizers it would take most of CI's time).
 if [ -d "$shared" ] && [ "${SUBDIV_CLI_SWEEP:-0}" = 1 ]; then
   while IFS= read -r -d '' mesh; do
-    case "$mesh" in *pole360* | *catmark_rook*) continue ;; esac
     timeout 30 "$SUBDIV" refine "$mesh" -o "$work/sweep.obj" -q >/dev/null 2>"$work/err" || continue
     for args in "limit -o $work/sweep_limit.obj" "depth --eps 0.01" "adaptive --eps 0.05 --max-level 3 -o $work/sweep_adaptive.obj" \
                 "convert $work/sweep.ply" "info"; do

@@ -66,6 +66,16 @@ struct AnalysisOptions {
   int max_rings = 4;           ///< largest neighbourhood tried for invariance
   int characteristic_levels = 3;
   bool characteristic_map = true;  ///< false: spectrum and masks only (faster)
+  /// false: no limit or tangent masks either (the depth bound's rates need
+  /// the spectrum alone).
+  bool masks = true;
+  /// Interior configurations whose mask matrix (`matrix`) has at least this
+  /// many rows find the tangent masks' subdominant pair through
+  /// spectrum_by_rotation, as the spectrum of `wide_matrix` always is: the
+  /// dense eigensolver and its clustering take minutes at valence 360. The
+  /// masks agree to rounding (tests/analysis/rotation_route_test.cpp); smaller
+  /// matrices keep the dense route, and with it their masks bit for bit.
+  int rotation_rows = 128;
   /// The rules the configuration is refined with (boundary rules, flatness).
   RefineOptions rules;
 };

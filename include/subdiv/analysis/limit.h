@@ -80,6 +80,12 @@ struct LimitOptions {
   int max_resolve_levels = 10;
   /// Closed-form route: no step is taken whose mesh would have more faces.
   std::int64_t max_resolve_faces = std::int64_t{1} << 24;
+  /// Closed-form route (quad and triangle splits): refine only the faces
+  /// around the input vertices and the semi-sharp tags, level by level
+  /// (src/analysis/local_refinement.h): the same results bit for bit, in
+  /// time and memory that no longer grow fourfold a level. false refines
+  /// whole levels (for comparison).
+  bool local_levels = true;
   bool normals = true;
   /// Boundary interpolation and non-manifold handling, as for refine().
   RefineOptions refine;
