@@ -52,17 +52,20 @@ void BM_ReadObjFile_SharedMesh(benchmark::State& state, const char* relative) {
 }
 BENCHMARK_CAPTURE(BM_ReadObjFile_SharedMesh, amo, "pmp/amo.obj")->Unit(benchmark::kMillisecond);
 
+// Args: torus size, formatting threads (the bytes are the same for any).
 void BM_FormatObj(benchmark::State& state) {
   const PolygonMesh mesh = triangulated_torus(static_cast<int>(state.range(0)));
+  WriteOptions options;
+  options.threads = static_cast<int>(state.range(1));
   std::size_t bytes = 0;
   for (auto _ : state) {
-    const std::string text = format_obj(mesh);
+    const std::string text = format_obj(mesh, options);
     bytes = text.size();
     benchmark::DoNotOptimize(text.data());
   }
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(bytes));
 }
-BENCHMARK(BM_FormatObj)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FormatObj)->Args({1000, 1})->Args({1000, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_ParsePly(benchmark::State& state) {
   const auto encoding = static_cast<PlyEncoding>(state.range(1));
