@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -36,7 +37,7 @@
 namespace subdiv {
 namespace {
 
-std::string shared_mesh(const std::string& name) { return std::string(SUBDIV_SHARED_MESH_DIR) + "/" + name; }
+std::string shared_mesh(const std::string& name) { return (std::filesystem::path(SUBDIV_SHARED_MESH_DIR) / name).string(); }
 
 double angle_between(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
 
