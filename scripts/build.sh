@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# Configures and builds subdiv. Usage: scripts/build.sh [--sanitize] [extra cmake args]
+# Configures and builds subdiv. Usage: scripts/build.sh [--sanitize | --tool] [extra cmake args]
 #   default:     build/       Release, tests + examples + benchmarks
+#   --tool:      build/       Release, the subdiv program only (the demo: no tests or benchmarks compiled)
 #   --sanitize:  build-asan/  -O1 with line tables, AddressSanitizer + UBSan, tests only
 # With CI=true, compiler warnings are errors.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 build_dir=build
+targets=()
 args=(-DCMAKE_BUILD_TYPE=Release -DSUBDIV_BUILD_TESTS=ON -DSUBDIV_BUILD_EXAMPLES=ON -DSUBDIV_BUILD_BENCHMARKS=ON)
-if [ "${1:-}" = "--sanitize" ]; then
+if [ "${1:-}" = "--tool" ]; then
+  shift
+  targets=(--target subdiv)
+elif [ "${1:-}" = "--sanitize" ]; then
   shift
   build_dir=build-asan
   # -O1 -g1: line tables for the sanitizers' stack traces at half the
@@ -25,4 +30,4 @@ if [ ! -f "$build_dir/CMakeCache.txt" ]; then
 else
   cmake -S . -B "$build_dir" "${args[@]}" "$@" >/dev/null
 fi
-cmake --build "$build_dir" --parallel "$(nproc)"
+cmake --build "$build_dir" --parallel "$(nproc)" "${targets[@]}"

@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/setup.sh
-bash scripts/build.sh
+bash scripts/build.sh --tool  # the program only: no tests or benchmarks compiled
 subdiv=build/tools/subdiv/subdiv
 mkdir -p out
 for mesh in data/meshes/*.obj; do
@@ -31,7 +31,9 @@ echo "== the cube and the tetrahedron with every surface scheme (4 levels)"
 for mesh in cube tetrahedron; do
   for scheme in catmull-clark loop butterfly modified-butterfly doo-sabin midedge sqrt3 interpolatory-sqrt3 \
                 four-eight gcc midpoint quasi-4-8; do
-    "$subdiv" refine "data/meshes/$mesh.obj" -s "$scheme" --triangulate -l 4 -o "out/${mesh}_${scheme}4.obj"
+    triangulate=()  # the schemes that read triangles get the triangulated mesh
+    case "$scheme" in loop | butterfly | modified-butterfly | sqrt3 | interpolatory-sqrt3 | quasi-4-8) triangulate=(--triangulate) ;; esac
+    "$subdiv" refine "data/meshes/$mesh.obj" -s "$scheme" "${triangulate[@]}" -l 4 -o "out/${mesh}_${scheme}4.obj"
   done
 done
 # Kobbelt's interpolatory scheme reads quads: the cube, and the L (open, with corners).

@@ -745,6 +745,8 @@ run closed-form-butterfly 1 limit "$meshes/cube.obj" -s butterfly --triangulate 
 run corner-angles-standard 1 refine "$meshes/cube.obj" -o "$work/x.obj" --corner-angles measured &&
   stderr_has corner-angles-standard "--corner-angles applies to --boundary-rules piecewise-smooth"
 run analyze-flatness 1 analyze -s loop --flatness 0.5 && stderr_has analyze-flatness "--flatness applies to"
+run triangulate-quads 1 refine "$meshes/cube.obj" -s catmull-clark --triangulate -o "$work/x.obj" &&
+  stderr_one_line triangulate-quads && stderr_has triangulate-quads "--triangulate applies to the schemes that read triangles (loop"
 
 # adaptive refuses at once what cannot fit, with the a-priori bound's depth.
 run adaptive-memory 1 adaptive "$meshes/spot_control_mesh.obj" --eps 1e-9 --max-level 12 -o "$work/huge.obj" &&

@@ -44,6 +44,7 @@ struct RefineCommandOptions {
 // Every polyline of the file refined on its own; the output holds the refined
 // points of each polyline in turn and one `l` line per polyline.
 int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& opt) {
+  PhaseClock clock;
   const std::string name(registered.name);
   const char* option = surface_option_given(opt.refinement);
   if (!option && opt.full_steps) option = "--full-steps";
@@ -69,7 +70,6 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
     warnf("subdiv: warning: %s: vertex channels and tags are not carried through curve refinement\n",
                  opt.input.c_str());
 
-  PhaseClock clock;
   clock.lap("read");
   PolygonMesh result;
   for (std::size_t l = 0; l < mesh.polylines.size(); ++l) {

@@ -29,6 +29,14 @@ CreaseTag parse_crease(const std::string& text, Index vertex_count) {
   return {static_cast<Index>(v[0]), static_cast<Index>(v[1]), kInfiniteSharpness};
 }
 
+// The registered schemes that read triangles, comma-separated.
+std::string triangle_scheme_names() {
+  std::string names;
+  for (const Scheme* s : all_schemes())
+    if (s->traits.needs_triangles) names += (names.empty() ? "" : ", ") + std::string(s->name);
+  return names;
+}
+
 }  // namespace
 
 void add_refinement_options(CLI::App& cmd, RefinementOptionValues& values, const std::string& scheme_help) {
@@ -50,7 +58,8 @@ void add_refinement_options(CLI::App& cmd, RefinementOptionValues& values, const
       ->type_name("A,B");
   cmd.add_flag("--allow-non-manifold", values.allow_non_manifold,
                "Accept non-manifold or inconsistently oriented meshes, treating those elements as sharp");
-  cmd.add_flag("--triangulate", values.triangulate, "Triangulate polygons first (for triangle schemes such as loop)");
+  cmd.add_flag("--triangulate", values.triangulate,
+               "Triangulate polygons first (for the schemes that read triangles, such as loop; refused for others)");
   cmd.add_option("--threads", values.threads, "Worker threads (0 = all cores); results do not depend on it")
       ->capture_default_str()
       ->check(CLI::Range(0, 1024));
@@ -68,6 +77,9 @@ Scheme chosen_scheme(const RefinementOptionValues& values) {
 
 void apply_refinement_options(const RefinementOptionValues& values, const Scheme& scheme, MeshFile& file,
                               RefineOptions& options) {
+  if (values.triangulate && !scheme.traits.needs_triangles)
+    throw InvalidInputError("--triangulate applies to the schemes that read triangles (" + triangle_scheme_names() +
+                            "), not to " + std::string(scheme.name) + ", which reads the polygons as they are");
   triangulate_if_asked(scheme, values.triangulate, file);
   apply_rule_options(values.rules, file.mesh, options);
   for (const std::string& text : values.creases)
