@@ -283,7 +283,7 @@ Command add_analyze_command(CLI::App& app) {
   cmd->add_option("--flatness", opt->flatness,
                   "Flatness parameter s at concave corners (piecewise-smooth; default 1 - (1/4)/lambda_3, 0 = off)")
       ->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--tension", opt->tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
+  cmd->add_option("--tension", opt->tension, "butterfly, kobbelt and the four-point curve scheme: the tension w (default 1/16)");
   add_degree_options(*cmd, opt->degree);
   cmd->add_option("--warmup", opt->warmup, "quasi-4-8: binary steps before the matrix is read (default 8)")
       ->check(CLI::Range(0, 10));

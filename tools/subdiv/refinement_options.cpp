@@ -41,7 +41,7 @@ std::string triangle_scheme_names() {
 
 void add_refinement_options(CLI::App& cmd, RefinementOptionValues& values, const std::string& scheme_help) {
   cmd.add_option("-s,--scheme", values.scheme, scheme_help)->capture_default_str();
-  cmd.add_option("--tension", values.tension, "butterfly and the four-point curve scheme: the tension w (default 1/16)");
+  cmd.add_option("--tension", values.tension, "butterfly, kobbelt and the four-point curve scheme: the tension w (default 1/16)");
   add_degree_options(cmd, values.degree);
   cmd.add_option("--quasi-boundary", values.quasi_boundary,
                  "quasi-4-8: boundary vertices fixed (default) or the boundary polygon smoothed")
