@@ -105,6 +105,20 @@ int run_depth(const DepthCommandOptions& opt) {
   const std::vector<LevelCost> costs = level_costs(file.mesh, scheme, depth);
   clock.lap("bound");
 
+  if (!opt.report.json) {  // the bound before the verification, which can take long
+    std::printf("%s: %s, %s, scheme %s\n", opt.input.c_str(),
+                count_of(file.mesh.vertex_count(), "vertex", "vertices").c_str(),
+                count_of(file.mesh.face_count(), "face", "faces").c_str(), name.c_str());
+    print_bound(bound, opt.eps);
+    std::printf("\ndepth for accuracy %g: %d (bound there: %.6g)\n", opt.eps, depth, bound.at(depth));
+    if (steps > 1)
+      std::printf("levels count %d %s steps each (its two-step quad split): refine -l %d\n", steps, name.c_str(),
+                  steps * depth);
+    print_costs(costs);
+    print_trade_off(bound, opt.eps);
+    std::fflush(stdout);
+  }
+
   std::optional<DepthCheck> check;
   if (opt.verify) {
     const LevelCost& size = costs.back();
@@ -138,22 +152,13 @@ int run_depth(const DepthCommandOptions& opt) {
     return within ? kExitOk : kExitInternal;
   }
 
-  std::printf("%s: %s, %s, scheme %s\n", opt.input.c_str(), count_of(file.mesh.vertex_count(), "vertex", "vertices").c_str(),
-              count_of(file.mesh.face_count(), "face", "faces").c_str(), name.c_str());
-  print_bound(bound, opt.eps);
-  std::printf("\ndepth for accuracy %g: %d (bound there: %.6g)\n", opt.eps, depth, bound.at(depth));
-  if (steps > 1)
-    std::printf("levels count %d %s steps each (its two-step quad split): refine -l %d\n", steps, name.c_str(),
-                steps * depth);
-  print_costs(costs);
-  print_trade_off(bound, opt.eps);
   if (check) {
     std::printf("\nverify: after %s the largest vertex-to-limit distance is %.6g (bound %.6g, accuracy %g): %s\n",
-                count_of(steps * depth, "step", "steps").c_str(), check->measured, check->bound, opt.eps, within ? "within" : "NOT within");
+                count_of(steps * depth, "step", "steps").c_str(), check->measured, check->bound, opt.eps,
+                within ? "within" : "NOT within");
     if (check->has_previous)
       std::printf("verify: after %s it is %.6g: depth %d %s\n", count_of(steps * (depth - 1), "step", "steps").c_str(),
-                  check->measured_previous,
-                  depth - 1,
+                  check->measured_previous, depth - 1,
                   check->measured_previous <= opt.eps ? "would already have been enough (the bound is not tight)"
                                                       : "would not have been enough (the bound is tight)");
   }
