@@ -606,21 +606,21 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   WholeLevel whole{hierarchy.finest().mesh.face_count(), hierarchy.finest().mesh.corner_count()};
   for (int l = 0; l < levels; ++l) {
     // The closed-form route stops before a level over its face budget.
-    const std::int64_t child_faces = scheme.split == SplitRule::quad ? whole.corners : 4 * whole.faces;
-    if (closed_form && !point_split && child_faces > options.max_resolve_faces) {
+    const WholeLevel child = whole.child(scheme.split);
+    if (closed_form && !point_split && child.faces > options.max_resolve_faces) {
       levels = l;
       break;
     }
     refine_further(hierarchy, scheme, 1, one, KeepLevels::last);
     const SplitMap& map = *hierarchy.finest().map;
     for (Index& w : where) w = map.vertex_point(w);
-    whole = whole.child(scheme.split);
     if (crop) {
       PolygonMesh& level = hierarchy.levels.back().mesh;
       level = detail::crop_around(level, where, detail::kCropRings);
       // The cut leaves vertices with separate fans, which refinement treats
       // as sharp: only outside the rings kept exact.
       one.allow_non_manifold = true;
+      whole = child;
     } else {
       whole = {hierarchy.finest().mesh.face_count(), hierarchy.finest().mesh.corner_count()};
     }

@@ -42,13 +42,7 @@ struct LimitCommandOptions {
 
 // The schemes with closed-form limit masks, as "a, b and c".
 std::string closed_form_scheme_names() {
-  std::vector<std::string> names;
-  for (const Scheme* s : all_schemes())
-    if (s->limit_masks) names.emplace_back(s->name);
-  std::string out;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
-  return out;
+  return names_where([](const Scheme& s) { return s.limit_masks != nullptr; });
 }
 
 int run_limit(const LimitCommandOptions& opt) {

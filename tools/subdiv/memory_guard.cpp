@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -22,10 +23,18 @@ std::optional<std::int64_t> available_memory() {
   return std::nullopt;
 }
 
+namespace {
+
+// The sizes of the levels up to `steps` refinement steps: level_costs counts
+// a scheme that takes two steps at once in levels of two.
+std::vector<LevelCost> costs_up_to(const PolygonMesh& mesh, const Scheme& scheme, int steps) {
+  return level_costs(mesh, scheme, scheme.fast_path.two_steps ? (steps + 1) / 2 : steps);
+}
+
+}  // namespace
+
 std::int64_t estimated_peak_bytes(const PolygonMesh& mesh, const Scheme& scheme, int levels) {
-  // level_costs counts a scheme that takes two steps at once in levels of two.
-  const int counted = scheme.fast_path.two_steps ? (levels + 1) / 2 : levels;
-  const LevelCost last = level_costs(mesh, scheme, counted).back();
+  const LevelCost last = costs_up_to(mesh, scheme, levels).back();
   std::int64_t bytes = last.bytes;
   for (const VertexChannel& c : mesh.vertex_channels) bytes += last.vertices * c.components * 8;
   for (const FaceVaryingChannel& c : mesh.face_varying_channels) bytes += last.corners * (4 + c.components * 8);
@@ -33,9 +42,8 @@ std::int64_t estimated_peak_bytes(const PolygonMesh& mesh, const Scheme& scheme,
 }
 
 std::int64_t estimated_adaptive_peak_bytes(const PolygonMesh& mesh, const Scheme& scheme, int levels) {
-  const int counted = scheme.fast_path.two_steps ? (levels + 1) / 2 : levels;
   std::int64_t bytes = 0;
-  for (const LevelCost& level : level_costs(mesh, scheme, counted)) bytes += level.bytes;
+  for (const LevelCost& level : costs_up_to(mesh, scheme, levels)) bytes += level.bytes;
   return kAdaptivePeakFactor * bytes;
 }
 

@@ -29,14 +29,6 @@ CreaseTag parse_crease(const std::string& text, Index vertex_count) {
   return {static_cast<Index>(v[0]), static_cast<Index>(v[1]), kInfiniteSharpness};
 }
 
-// The registered schemes that read triangles, comma-separated.
-std::string triangle_scheme_names() {
-  std::string names;
-  for (const Scheme* s : all_schemes())
-    if (s->traits.needs_triangles) names += (names.empty() ? "" : ", ") + std::string(s->name);
-  return names;
-}
-
 }  // namespace
 
 void add_refinement_options(CLI::App& cmd, RefinementOptionValues& values, const std::string& scheme_help) {
@@ -78,8 +70,10 @@ Scheme chosen_scheme(const RefinementOptionValues& values) {
 void apply_refinement_options(const RefinementOptionValues& values, const Scheme& scheme, MeshFile& file,
                               RefineOptions& options) {
   if (values.triangulate && !scheme.traits.needs_triangles)
-    throw InvalidInputError("--triangulate applies to the schemes that read triangles (" + triangle_scheme_names() +
-                            "), not to " + std::string(scheme.name) + ", which reads the polygons as they are");
+    throw InvalidInputError(
+        "--triangulate applies to the schemes that read triangles (" +
+        names_where([](const Scheme& s) { return s.traits.needs_triangles; }) + "), not to " +
+        std::string(scheme.name) + ", which reads the polygons as they are");
   triangulate_if_asked(scheme, values.triangulate, file);
   apply_rule_options(values.rules, file.mesh, options);
   for (const std::string& text : values.creases)

@@ -26,9 +26,11 @@ std::string curve_scheme_names() {
 
 namespace {
 
-// The names of the surface schemes with this trait, as "a, b and c".
-template <typename Has>
-std::string names_where(Has has) {
+bool has_degree(const Scheme& s) { return degree_parameters(s.parameters) != nullptr && s.steps != nullptr; }
+
+}  // namespace
+
+std::string names_where(bool (*has)(const Scheme&)) {
   std::vector<std::string> names;
   for (const Scheme* s : all_schemes())
     if (has(*s)) names.emplace_back(s->name);
@@ -37,10 +39,6 @@ std::string names_where(Has has) {
     out += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
   return out;
 }
-
-bool has_degree(const Scheme& s) { return degree_parameters(s.parameters) != nullptr && s.steps != nullptr; }
-
-}  // namespace
 
 void throw_unknown_scheme(const std::string& name, bool curves_too) {
   std::vector<std::string> names;

@@ -16,6 +16,10 @@ namespace subdiv::cli {
 /// The registered surface schemes' names, comma-separated.
 std::string surface_scheme_names();
 
+/// The names of the registered surface schemes for which `has` holds, as
+/// "a, b and c".
+std::string names_where(bool (*has)(const Scheme&));
+
 /// Throws InvalidInputError for a scheme name no registry knows: the known
 /// names (the curve schemes' too where `curves_too`), and the closest one.
 [[noreturn]] void throw_unknown_scheme(const std::string& name, bool curves_too);
