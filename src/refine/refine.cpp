@@ -15,6 +15,7 @@
 
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/validation.h"
+#include "grid_refine.h"
 #include "piecewise_smooth.h"
 #include "../core/row_accumulator.h"
 
@@ -236,11 +237,15 @@ bool takes_two_steps(const Scheme& scheme, const PolygonMesh& mesh, const MeshTo
 // own parent's where the split allows it (a manifold level), built from the
 // faces otherwise; `step(parent, topology, l, level_scheme)` refines one
 // level with `scheme`, or two with scheme.fast_path.two_steps where they apply.
+// `finish(level, topology, remaining)`, where given, may make the remaining
+// levels at once (the grid path); it is asked before each level.
+using Finish = std::function<std::optional<PolygonMesh>(const PolygonMesh&, const MeshTopology&, int)>;
+
 template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
                           const RefineOptions& options, Step&& step,
                           const std::function<void(int, const Level&)>& on_child = nullptr,
-                          bool every_level = false) {
+                          bool every_level = false, const Finish& finish = nullptr) {
   PolygonMesh current = mesh;
   if (options.boundary_rules == BoundaryRules::piecewise_smooth && options.corner_angles == CornerAngles::measured)
     detail::measure_corner_angles(current, coarse_topology);
@@ -248,6 +253,12 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
   const int last = options.start_level + options.levels;
   for (int l = options.start_level; l < last;) {
     if (!topology) topology.emplace(current);
+    if (finish) {
+      if (std::optional<PolygonMesh> done = finish(current, *topology, last - l)) {
+        if (options.on_level) options.on_level(options.levels, *done);
+        return std::move(*done);
+      }
+    }
     const bool twice = !every_level && l + 2 <= last && takes_two_steps(scheme, current, *topology);
     const Scheme& level_scheme = twice ? *scheme.fast_path.two_steps : scheme;
     Level level = step(current, *topology, l, level_scheme);
@@ -523,15 +534,23 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
   PolygonMesh result;
+  Finish as_grids;
+  if (options.regular_grids && scheme.fast_path.regular_grid)
+    as_grids = [&](const PolygonMesh& level, const MeshTopology& topology, int remaining) {
+      return detail::refine_as_grids(level, topology, scheme, options, remaining);
+    };
   run_with_threads(options.threads, [&] {
-    result = refine_levels(mesh, std::move(coarse), scheme, options,
-                           [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
-      return refine_level(parent, topology, l, level_scheme, boundary, method, options,
-                          [&](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level, bool) {
-                            evaluate_fast(source, step, view, level);
-                            detail::apply_flatness(level.flatness, level.child);
-                          });
-    });
+    result = refine_levels(
+        mesh, std::move(coarse), scheme, options,
+        [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
+          return refine_level(parent, topology, l, level_scheme, boundary, method, options,
+                              [&](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level,
+                                  bool) {
+                                evaluate_fast(source, step, view, level);
+                                detail::apply_flatness(level.flatness, level.child);
+                              });
+        },
+        nullptr, false, as_grids);
   });
   return result;
 }

@@ -13,6 +13,9 @@ void face_point(const LevelView& level, Index f, MaskBuilder& mask) { detail::ad
 void edge_point(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) { detail::add_edge_midpoint(level, e, mask); }
 void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
 
+// Along a grid line: old points kept, new ones at midpoints.
+constexpr RegularGrid kRegularGrid{.even = {0.0, 1.0, 0.0}, .odd = {0.5, 0.5}};
+
 }  // namespace
 
 const Scheme& bilinear_scheme() {
@@ -22,7 +25,8 @@ const Scheme& bilinear_scheme() {
       .citation = "bilinear refinement (OpenSubdiv's SCHEME_BILINEAR)",
       .split = SplitRule::quad,
       .traits = {.interpolating = true},
-      .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point}};
+      .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point},
+      .fast_path = {.regular_grid = &kRegularGrid}};
   return scheme;
 }
 

@@ -136,6 +136,11 @@ bool limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
   return false;
 }
 
+// On regular quads the rules above are the uniform cubic B-spline's
+// refinement along each grid line: 1/8, 3/4, 1/8 at old points, 1/2, 1/2 at
+// new ones (Lane and Riesenfeld 1980).
+constexpr RegularGrid kRegularGrid{.even = {0.125, 0.75, 0.125}, .odd = {0.5, 0.5}};
+
 }  // namespace
 
 double catmull_clark_gamma(double theta) { return 0.375 - 0.25 * std::cos(theta); }
@@ -150,7 +155,8 @@ const Scheme& catmull_clark_scheme() {
       .traits = {.paper_depth_bound = PaperDepthBound::cheng_catmull_clark},
       .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point,
                 .boundary_curve = &cubic_bspline_curve_scheme()},
-      .limit_masks = limit_masks};
+      .limit_masks = limit_masks,
+      .fast_path = {.regular_grid = &kRegularGrid}};
   return scheme;
 }
 

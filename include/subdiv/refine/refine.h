@@ -73,11 +73,19 @@ struct RefineOptions : RuleOptions {
   int start_level = 0;
   /// Worker threads; 0 = all available. Results are identical for any count.
   int threads = 0;
+  /// Refine the regular faces of schemes that declare a grid rule
+  /// (FastPath::regular_grid: Catmull-Clark, bilinear) as grids, the
+  /// remaining levels at once, where the level has only quads and no sharp
+  /// tags, vertex or face-varying channels (refine() only). The result is the
+  /// same mesh, numbering included, with positions equal up to rounding;
+  /// false: the masks everywhere, level by level.
+  bool regular_grids = true;
   /// Called after each level with its number counted from this call
   /// (1-based) and the level's mesh.
   /// Where the engine takes two steps at once (Scheme::two_steps: 4-8 on a
   /// closed mesh without face-varying channels) the level between them is
-  /// never made, and only the second is reported.
+  /// never made, and only the second is reported; where the grid path
+  /// (regular_grids) takes the remaining levels, only the last is.
   std::function<void(int level, const PolygonMesh& mesh)> on_level;
 };
 

@@ -331,6 +331,17 @@ struct SchemeMasks {
   HeldVertices held_vertices = nullptr;
 };
 
+/// A quad-split scheme's rule on regular regions, as a tensor product: one
+/// step along a grid line makes the point at even position 2i from the coarse
+/// points i-1, i, i+1 with weights `even`, and the point at 2i+1 from i, i+1
+/// with `odd`; a surface point takes the product of its two directions'
+/// weights. Declared where the scheme's masks at interior vertices of valence
+/// 4 with no sharp edge are this product (a test derives it from them).
+struct RegularGrid {
+  std::array<double, 3> even;
+  std::array<double, 2> odd;
+};
+
 /// Shortcuts of the fast path (refine()), each held to the masks by tests.
 struct FastPath {
   /// The level's positions (PositionEvaluator); nullptr: the masks. Vertex
@@ -345,6 +356,10 @@ struct FastPath {
   /// face-varying channel; its child numbers the vertices [face points |
   /// edge points | vertex points] as every quad split does. nullptr: none.
   const Scheme* two_steps = nullptr;
+  /// The regular rule as a grid stencil (RegularGrid): refine() then refines
+  /// the faces whose one-ring is regular as grids (refine/grid_refine.h).
+  /// nullptr: none.
+  const RegularGrid* regular_grid = nullptr;
 };
 
 /// A subdivision scheme, declared by its rule file with designated

@@ -1,0 +1,234 @@
+// The grid path of refine() (src/refine/grid_refine.h) against its
+// definition, the masks: the declared grid rule is the masks' regular
+// stencil; refining with grids gives the masks' mesh (faces identical,
+// positions within 1e-14 of the mesh's size) on code-built, bundled and
+// shared meshes; results do not depend on the thread count; and the path
+// declines what it does not cover.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "refine/grid_refine.h"
+#include "subdiv/core/error.h"
+#include "subdiv/io/mesh_io.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/refine/refine.h"
+#include "subdiv/rules/bilinear.h"
+#include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/loop.h"
+#include "support/opensubdiv_shapes.h"
+#include "support/test_meshes.h"
+
+namespace subdiv {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kRelativeTolerance = 1e-14;  // of the bounding-box diagonal
+
+// A closed torus of n x n quads, every vertex of valence 4, positions
+// generic (no symmetry hides a misplaced weight).
+PolygonMesh torus(int n) {
+  PolygonMesh mesh;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / n;
+      const double r = 1.0 + 0.3 * std::cos(v) + 0.05 * std::sin(7.0 * i + 3.0 * j);
+      mesh.positions.push_back({r * std::cos(u), r * std::sin(u), 0.3 * std::sin(v) + 0.02 * std::cos(5.0 * i)});
+    }
+  auto id = [n](int i, int j) { return static_cast<Index>(((j + n) % n) * n + (i + n) % n); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) mesh.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return mesh;
+}
+
+double diagonal(const PolygonMesh& mesh) {
+  Vec3 lo = mesh.positions.front(), hi = lo;
+  for (const Vec3& p : mesh.positions)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], p[a]);
+      hi[a] = std::max(hi[a], p[a]);
+    }
+  return std::max(norm(hi - lo), 1e-300);
+}
+
+RefineOptions with_grids(bool grids, int levels) {
+  RefineOptions options;
+  options.levels = levels;
+  options.regular_grids = grids;
+  return options;
+}
+
+// The grid path's result equals the masks': faces identical, positions close.
+void expect_grids_equal_masks(const PolygonMesh& mesh, const Scheme& scheme, int levels, const std::string& what) {
+  const PolygonMesh grids = refine(mesh, scheme, with_grids(true, levels));
+  const PolygonMesh masks = refine(mesh, scheme, with_grids(false, levels));
+  ASSERT_EQ(grids.face_offsets, masks.face_offsets) << what;
+  ASSERT_EQ(grids.face_indices, masks.face_indices) << what;
+  ASSERT_EQ(grids.vertex_count(), masks.vertex_count()) << what;
+  EXPECT_EQ(grids.tags, masks.tags) << what;
+  const double tolerance = kRelativeTolerance * diagonal(mesh);
+  double worst = 0.0;
+  Index at = 0;
+  for (Index v = 0; v < grids.vertex_count(); ++v) {
+    const double d = norm(grids.positions[static_cast<std::size_t>(v)] - masks.positions[static_cast<std::size_t>(v)]);
+    if (d > worst) worst = d, at = v;
+  }
+  EXPECT_LE(worst, tolerance) << what << ": vertex " << at;
+}
+
+// Whether refine() takes the grid path for the last `remaining` levels of
+// this mesh, as asked at its start.
+bool takes_grids(const PolygonMesh& mesh, const Scheme& scheme, int remaining) {
+  const MeshTopology topology(mesh);
+  return detail::refine_as_grids(mesh, topology, scheme, with_grids(true, remaining), remaining).has_value();
+}
+
+TEST(GridRefine, DeclaredRuleIsTheMasksRegularStencil) {
+  // One level of the masks recorded as stencils on the torus: each child's
+  // row must be the tensor product of the declared line weights.
+  const PolygonMesh mesh = torus(6);
+  const MeshTopology t(mesh);
+  for (const Scheme* scheme : {&catmull_clark_scheme(), &bilinear_scheme()}) {
+    SCOPED_TRACE(std::string(scheme->name));
+    const RegularGrid& rule = *scheme->fast_path.regular_grid;
+    ASSERT_EQ(rule.even[0], rule.even[2]);  // symmetric, so the frame's direction does not matter
+    ASSERT_EQ(rule.odd[0], rule.odd[1]);
+    const StencilTable table = refine_stencil_table(mesh, *scheme, with_grids(false, 1));
+    auto weight = [&](Index row, Index vertex) {
+      const auto vs = table.row_vertices(row);
+      const auto ws = table.row_weights(row);
+      double w = 0.0;
+      for (std::size_t j = 0; j < vs.size(); ++j)
+        if (vs[j] == vertex) w += ws[j];
+      return w;
+    };
+    auto row_sum = [&](Index row) {
+      double s = 0.0;
+      for (const double w : table.row_weights(row)) s += w;
+      return s;
+    };
+    const Index nf = t.face_count(), ne = t.edge_count();
+    for (Index f = 0; f < nf; ++f) {  // face point: odd x odd on the face's corners
+      for (const Index v : t.face_vertices(f)) EXPECT_DOUBLE_EQ(weight(f, v), rule.odd[0] * rule.odd[1]);
+      EXPECT_NEAR(row_sum(f), 4 * rule.odd[0] * rule.odd[1], 1e-15);
+    }
+    for (Index e = 0; e < ne; ++e) {  // edge point: odd along the edge, even across it
+      const auto [a, b] = t.edge_vertices(e);
+      EXPECT_DOUBLE_EQ(weight(nf + e, a), rule.odd[0] * rule.even[1]);
+      EXPECT_DOUBLE_EQ(weight(nf + e, b), rule.odd[1] * rule.even[1]);
+      double others = 0.0;  // the two quads' other corners, odd x even[0 or 2] each
+      for (const Index c : t.edge_corners(e))
+        for (const Index v : t.face_vertices(t.corner_face(c)))
+          if (v != a && v != b) {
+            EXPECT_DOUBLE_EQ(weight(nf + e, v), rule.odd[0] * rule.even[0]);
+            others += weight(nf + e, v);
+          }
+      EXPECT_NEAR(row_sum(nf + e), weight(nf + e, a) + weight(nf + e, b) + others, 1e-15);
+    }
+    for (Index v = 0; v < t.vertex_count(); ++v) {  // vertex point: even x even
+      const Index row = nf + ne + v;
+      EXPECT_DOUBLE_EQ(weight(row, v), rule.even[1] * rule.even[1]);
+      for (const Index e : t.vertex_edges(v)) EXPECT_DOUBLE_EQ(weight(row, t.other_vertex(e, v)), rule.even[0] * rule.even[1]);
+      for (const Index c : t.vertex_corners(v))  // the diagonal: the corner opposite v
+        EXPECT_DOUBLE_EQ(weight(row, t.corner_vertex(t.corner_next(t.corner_next(c)))), rule.even[0] * rule.even[2]);
+      EXPECT_NEAR(row_sum(row), 1.0, 1e-15);
+    }
+  }
+}
+
+TEST(GridRefine, EqualsTheMasksOnCodeBuiltMeshes) {
+  for (const Scheme* scheme : {&catmull_clark_scheme(), &bilinear_scheme()}) {
+    for (int levels = 1; levels <= 4; ++levels) {
+      const std::string what = std::string(scheme->name) + ", " + std::to_string(levels) + " levels";
+      expect_grids_equal_masks(torus(5), *scheme, levels, "torus, " + what);
+      expect_grids_equal_masks(test::jittered(test::quad_grid(7, 5), 3), *scheme, levels, "open grid, " + what);
+      expect_grids_equal_masks(test::jittered(test::cube(), 1), *scheme, levels + 2, "cube, " + what);
+      if (levels <= 2) expect_grids_equal_masks(test::jittered(test::quad_grid(24, 20), 4), *scheme, levels, "open grid, " + what);
+    }
+  }
+  // The comparisons above covered both routes of the path: all-grid faces
+  // (the torus) and faces refined by the masks around them (the grid's rim).
+  EXPECT_TRUE(takes_grids(torus(5), catmull_clark_scheme(), 3));
+  EXPECT_TRUE(takes_grids(test::quad_grid(24, 20), catmull_clark_scheme(), 3));
+}
+
+TEST(GridRefine, EqualsTheMasksOnRealMeshes) {
+  std::vector<fs::path> files;
+  for (const char* name : {"cube.obj", "l_shape.obj", "spot_control_mesh.obj", "elephant.obj"})
+    files.emplace_back(test::bundled_path(name));
+  const fs::path shapes = test::opensubdiv_shape_dir();
+  if (fs::is_directory(shapes))
+    for (const auto& entry : fs::directory_iterator(shapes))
+      if (entry.path().extension() == ".obj") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  int compared = 0, by_grids = 0;
+  for (const fs::path& file : files) {
+    PolygonMesh mesh;
+    try {
+      mesh = read_mesh(file.string()).mesh;
+    } catch (const Error&) {
+      continue;  // the deliberately broken shapes
+    }
+    mesh.tags.boundary_interpolation = BoundaryInterpolation::edge_and_corner;
+    mesh.vertex_channels.clear();  // the grid path refines positions only
+    mesh.face_varying_channels.clear();
+    if (!test::rejection(mesh, catmull_clark_scheme(), with_grids(true, 1)).empty()) continue;
+    for (int levels = 1; levels <= 3; ++levels)
+      expect_grids_equal_masks(mesh, catmull_clark_scheme(), levels, file.filename().string());
+    // Where the path applies from some level on, it is the one compared.
+    const bool grids = takes_grids(refine(mesh, catmull_clark_scheme(), with_grids(false, 2)), catmull_clark_scheme(), 1);
+    by_grids += grids;
+    ++compared;
+  }
+  EXPECT_GE(compared, 4);
+  // spot, and on the shared shapes the tori, a dart and the face-varying tests.
+  EXPECT_GE(by_grids, fs::is_directory(shapes) ? 5 : 1) << "the grid path took too few meshes to be tested by them";
+  if (!fs::is_directory(shapes)) GTEST_SKIP() << "shared OpenSubdiv shapes not found at " << shapes << "; bundled meshes only";
+}
+
+TEST(GridRefine, SameResultForAnyThreadCount) {
+  for (const PolygonMesh& mesh : {torus(40), test::jittered(test::quad_grid(30, 20), 5)}) {
+    RefineOptions one = with_grids(true, 3), two = one;
+    one.threads = 1;
+    two.threads = 2;
+    const PolygonMesh a = refine(mesh, catmull_clark_scheme(), one);
+    const PolygonMesh b = refine(mesh, catmull_clark_scheme(), two);
+    EXPECT_EQ(a.face_indices, b.face_indices);
+    EXPECT_TRUE(a.positions == b.positions) << "positions differ between one and two threads";
+  }
+}
+
+TEST(GridRefine, DeclinesWhatItDoesNotCover) {
+  const PolygonMesh plain = torus(6);
+  EXPECT_TRUE(takes_grids(plain, catmull_clark_scheme(), 2));
+
+  PolygonMesh creased = plain;
+  creased.tags.creases.push_back({0, 1, 2.0});
+  EXPECT_FALSE(takes_grids(creased, catmull_clark_scheme(), 2));
+
+  PolygonMesh with_channel = plain;
+  with_channel.vertex_channels.push_back({"u", 1, std::vector<double>(plain.positions.size(), 1.0)});
+  EXPECT_FALSE(takes_grids(with_channel, catmull_clark_scheme(), 2));
+
+  PolygonMesh with_triangle = plain;
+  with_triangle.add_face({0, 7, 1});
+  EXPECT_FALSE(takes_grids(with_triangle, catmull_clark_scheme(), 2));
+
+  const MeshTopology topology(plain);
+  RefineOptions piecewise = with_grids(true, 2);
+  piecewise.boundary_rules = BoundaryRules::piecewise_smooth;
+  EXPECT_FALSE(detail::refine_as_grids(plain, topology, catmull_clark_scheme(), piecewise, 2));
+  EXPECT_FALSE(detail::refine_as_grids(plain, topology, loop_scheme(), with_grids(true, 2), 2));
+  // Meshes that are mostly extraordinary take the masks first.
+  EXPECT_FALSE(takes_grids(test::cube(), catmull_clark_scheme(), 2));
+}
+
+}  // namespace
+}  // namespace subdiv
