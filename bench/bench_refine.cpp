@@ -11,9 +11,10 @@
 namespace subdiv::bench {
 namespace {
 
-void refine_bench(benchmark::State& state, const PolygonMesh& mesh, const char* scheme_name) {
+void refine_bench(benchmark::State& state, const PolygonMesh& mesh, const char* scheme_name, bool grids = true) {
   const Scheme& scheme = *find_scheme(scheme_name);
   RefineOptions options;
+  options.regular_grids = grids;
   options.levels = static_cast<int>(state.range(1));
   const int threads = static_cast<int>(state.range(2));
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
@@ -34,6 +35,14 @@ void BM_Refine_CatmullClark(benchmark::State& state) {
 BENCHMARK(BM_Refine_CatmullClark)
     ->Args({158, 4, 1})->Args({158, 4, 2})->Args({1000, 2, 1})->Args({1000, 2, 2})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same by the masks alone, level by level (RefineOptions::regular_grids
+// off): what the grid path gains.
+void BM_Refine_CatmullClark_ByMasks(benchmark::State& state) {
+  refine_bench(state, torus(static_cast<int>(state.range(0))), "catmull-clark", false);
+}
+BENCHMARK(BM_Refine_CatmullClark_ByMasks)
+    ->Args({158, 4, 1})->Args({1000, 2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_Refine_Loop(benchmark::State& state) {
   refine_bench(state, triangulated_torus(static_cast<int>(state.range(0))), "loop");

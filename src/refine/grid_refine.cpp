@@ -29,18 +29,19 @@ struct LevelCounts {
 // A point of a starting face's grid at the final level: x along its first
 // edge, y from its first corner towards its last, both in 0 .. n.
 struct GridPoint {
-  int x = 0, y = 0;
+  int x, y;
 };
 
 GridPoint midpoint(GridPoint a, GridPoint b) { return {(a.x + b.x) / 2, (a.y + b.y) / 2}; }
 
 // A face of some level inside one starting face: its number, its vertices,
 // its edges (edge c runs from vertex c to vertex c + 1) and where its
-// corners lie on the starting face's final grid.
+// corners lie on the starting face's final grid. No member initializers:
+// four are made per split, and zeroing them first costs more than the split.
 struct SubFace {
-  Index face = 0;
-  std::array<Index, 4> vertex{}, edge{};
-  std::array<GridPoint, 4> at{};
+  Index face;
+  std::array<Index, 4> vertex, edge;
+  std::array<GridPoint, 4> at;
 };
 
 // The four children of `s` in the quad split of its level (`level` its
@@ -51,6 +52,9 @@ struct SubFace {
 // edges (face point, edge point), 4 per face in the order of their parent
 // edges' numbers | the halves of each parent edge, the one at its smaller
 // vertex first].
+// Without `edges`, the children's edges are left unset (the last level's
+// faces need none).
+template <bool edges>
 void split_sub_face(const SubFace& s, const LevelCounts& level, std::array<SubFace, 4>& children) {
   const auto edge_point = static_cast<Index>(level.faces);
   const auto vertex_point = static_cast<Index>(level.faces + level.edges);
@@ -67,8 +71,11 @@ void split_sub_face(const SubFace& s, const LevelCounts& level, std::array<SubFa
     SubFace& child = children[static_cast<std::size_t>(c)];
     child.face = 4 * s.face + c;
     child.vertex = {vertex_point + s.vertex[c], edge_point + s.edge[c], s.face, edge_point + s.edge[prev]};
-    child.edge = {half(s.edge[c], s.vertex[c], s.vertex[next]), interior(s.edge[c]), interior(s.edge[prev]),
-                  half(s.edge[prev], s.vertex[c], s.vertex[prev])};
+    if constexpr (edges)
+      child.edge = {half(s.edge[c], s.vertex[c], s.vertex[next]), interior(s.edge[c]), interior(s.edge[prev]),
+                    half(s.edge[prev], s.vertex[c], s.vertex[prev])};
+    else
+      child.edge = {kInvalidIndex, kInvalidIndex, kInvalidIndex, kInvalidIndex};
     child.at = {s.at[c], midpoint(s.at[c], s.at[next]), centre, midpoint(s.at[prev], s.at[c])};
   }
 }
@@ -79,7 +86,12 @@ template <typename Emit>
 void for_each_final_face(const SubFace& s, std::size_t depth, std::span<const LevelCounts> counts, Emit& emit) {
   if (depth == counts.size()) return emit(s);
   std::array<SubFace, 4> children;
-  split_sub_face(s, counts[depth], children);
+  if (depth + 1 == counts.size()) {
+    split_sub_face<false>(s, counts[depth], children);
+    for (const SubFace& child : children) emit(child);
+    return;
+  }
+  split_sub_face<true>(s, counts[depth], children);
   for (const SubFace& child : children) for_each_final_face(child, depth + 1, counts, emit);
 }
 
@@ -164,39 +176,98 @@ Ownership ownership_of(const MeshTopology& t, Index f, int n) {
   return o;
 }
 
-// One step of the tensor stencil along a line of m points (stride `in`),
-// making 2m - 3 points (stride `out`): the line's points from -1 to n + 1
-// become those from -1 to 2n + 1.
-void refine_line(const RegularGrid& rule, const Vec3* in, std::ptrdiff_t in_stride, int m, Vec3* out,
-                 std::ptrdiff_t out_stride) {
+// One step of the tensor stencil along a line of m points (`in_stride`
+// points apart), making 2m - 3 points (`out_stride` apart): the line's points
+// from -1 to n + 1 become those from -1 to 2n + 1. A point is `width`
+// doubles (kWidth where known at compile time, 0 otherwise).
+template <int kWidth>
+void refine_line(const RegularGrid& rule, const double* in, std::ptrdiff_t in_stride, int m, double* out,
+                 std::ptrdiff_t out_stride, int width) {
+  const std::ptrdiff_t w = kWidth > 0 ? kWidth : width;
+  const std::ptrdiff_t is = in_stride * w, os = out_stride * w;
   const int fine = 2 * m - 3;
   for (int t = 0; t < fine; ++t) {
-    const Vec3* a = in + (t / 2) * in_stride;
-    if (t % 2 == 0) out[t * out_stride] = rule.odd[0] * a[0] + rule.odd[1] * a[in_stride];
-    else out[t * out_stride] = rule.even[0] * a[0] + rule.even[1] * a[in_stride] + rule.even[2] * a[2 * in_stride];
+    const double* a = in + (t / 2) * is;
+    double* o = out + t * os;
+    if (t % 2 == 0) {
+      for (std::ptrdiff_t j = 0; j < w; ++j) o[j] = rule.odd[0] * a[j] + rule.odd[1] * a[is + j];
+    } else {
+      for (std::ptrdiff_t j = 0; j < w; ++j)
+        o[j] = rule.even[0] * a[j] + rule.even[1] * a[is + j] + rule.even[2] * a[2 * is + j];
+    }
   }
 }
 
-// A thread's working arrays.
+// A thread's working arrays, sized once for the final level's grid.
 struct Scratch {
-  std::vector<Vec3> grid, rows, refined;
+  std::vector<double> grid, rows, refined;
   std::vector<Index> index;  // the final vertex number of each grid point
+
+  void size_for(int n, int width) {
+    const auto side = static_cast<std::size_t>(n + 3);
+    const std::size_t doubles = side * side * static_cast<std::size_t>(width);
+    if (grid.size() >= doubles) return;
+    grid.resize(doubles);
+    rows.resize(doubles);
+    refined.resize(doubles);
+    index.resize(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1));
+  }
 };
 
-// The (n + 3)^2 grid of face f's patch after `levels` steps, in scratch.grid.
-void refine_patch(const RegularGrid& rule, const std::array<Index, 16>& patch, std::span<const Vec3> positions,
-                  int levels, Scratch& s) {
+// Refines the 4 x 4 control values in scratch.grid `levels` times: the
+// (n + 3)^2 grid of the patch's points from -1 to n + 1, in scratch.grid.
+template <int kWidth>
+void refine_patch(const RegularGrid& rule, int levels, int width, Scratch& s) {
   int m = 4;
-  s.grid.resize(16);
-  for (std::size_t i = 0; i < 16; ++i) s.grid[i] = positions[static_cast<std::size_t>(patch[i])];
   for (int l = 0; l < levels; ++l) {
     const int fine = 2 * m - 3;
-    s.rows.resize(static_cast<std::size_t>(m) * static_cast<std::size_t>(fine));
-    for (int r = 0; r < m; ++r) refine_line(rule, s.grid.data() + r * m, 1, m, s.rows.data() + r * fine, 1);
-    s.refined.resize(static_cast<std::size_t>(fine) * static_cast<std::size_t>(fine));
-    for (int col = 0; col < fine; ++col) refine_line(rule, s.rows.data() + col, fine, m, s.refined.data() + col, fine);
+    for (int r = 0; r < m; ++r)
+      refine_line<kWidth>(rule, s.grid.data() + r * m * width, 1, m, s.rows.data() + r * fine * width, 1, width);
+    for (int col = 0; col < fine; ++col)
+      refine_line<kWidth>(rule, s.rows.data() + col * width, fine, m, s.refined.data() + col * width, fine, width);
     s.grid.swap(s.refined);
     m = fine;
+  }
+}
+
+// The values refined per point: the position, then each vertex channel's.
+struct PointValues {
+  const PolygonMesh& mesh;
+  int width = 3;
+
+  explicit PointValues(const PolygonMesh& m) : mesh(m) {
+    for (const VertexChannel& c : mesh.vertex_channels) width += c.components;
+  }
+  void gather(Index v, double* out) const {
+    const Vec3& p = mesh.positions[static_cast<std::size_t>(v)];
+    out[0] = p.x, out[1] = p.y, out[2] = p.z;
+    out += 3;
+    for (const VertexChannel& c : mesh.vertex_channels) {
+      const auto k = static_cast<std::size_t>(c.components);
+      std::copy_n(c.values.data() + static_cast<std::size_t>(v) * k, k, out);
+      out += k;
+    }
+  }
+};
+
+// Writes one point's values (position, then channels) to vertex v of `out`.
+void scatter(const double* values, Index v, PolygonMesh& out) {
+  out.positions[static_cast<std::size_t>(v)] = {values[0], values[1], values[2]};
+  values += 3;
+  for (VertexChannel& c : out.vertex_channels) {
+    const auto k = static_cast<std::size_t>(c.components);
+    std::copy_n(values, k, c.values.data() + static_cast<std::size_t>(v) * k);
+    values += k;
+  }
+}
+
+// Copies vertex `from` of `in` (position and channels) to vertex `to` of `out`.
+void copy_point(const PolygonMesh& in, Index from, Index to, PolygonMesh& out) {
+  out.positions[static_cast<std::size_t>(to)] = in.positions[static_cast<std::size_t>(from)];
+  for (std::size_t ch = 0; ch < out.vertex_channels.size(); ++ch) {
+    const auto k = static_cast<std::size_t>(out.vertex_channels[ch].components);
+    std::copy_n(in.vertex_channels[ch].values.data() + static_cast<std::size_t>(from) * k, k,
+                out.vertex_channels[ch].values.data() + static_cast<std::size_t>(to) * k);
   }
 }
 
@@ -214,23 +285,102 @@ Tags child_tags(const Tags& parent) {
   return tags;
 }
 
+// Whether the grid path covers these levels (grid_refine.h), before looking
+// at which faces are regular.
+bool covers(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme, const RefineOptions& options,
+            int levels) {
+  // Deeper runs take their first levels by the masks, while the mesh is
+  // small, so that a face's grid stays within a few megabytes.
+  if (!scheme.fast_path.regular_grid || scheme.split != SplitRule::quad || scheme.steps || levels < 1 ||
+      levels > kMaxGridLevels)
+    return false;
+  if (options.boundary_rules != BoundaryRules::standard || options.allow_non_manifold) return false;
+  if (!level.face_varying_channels.empty()) return false;
+  for (const VertexChannel& c : level.vertex_channels)
+    if (c.components <= 0 || c.values.size() != level.positions.size() * static_cast<std::size_t>(c.components))
+      return false;
+  if (!level.tags.creases.empty() || !level.tags.corners.empty() || !level.tags.holes.empty()) return false;
+  for (Index f = 0; f < t.face_count(); ++f)
+    if (t.face_size(f) != 4) return false;
+  for (Index v = 0; v < t.vertex_count(); ++v)
+    if (t.vertex_kind(v) == VertexKind::isolated) return false;
+  return true;
+}
+
+// The faces that are not regular patches and those sharing a vertex with
+// them, as a mesh of their own for the masks (its artificial boundary
+// changes only points outside the faces taken from it), with the number
+// each face has there (kInvalidIndex for faces not in it).
+struct MasksMesh {
+  PolygonMesh mesh;
+  std::vector<Index> face_in_mesh;
+};
+
+// nullopt where it would hold more than half the faces.
+std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology& t, const std::vector<char>& regular) {
+  const Index nf = t.face_count();
+  std::vector<char> near(static_cast<std::size_t>(t.vertex_count()));
+  for (Index f = 0; f < nf; ++f)
+    if (!regular[static_cast<std::size_t>(f)])
+      for (const Index v : t.face_vertices(f)) near[static_cast<std::size_t>(v)] = 1;
+  MasksMesh local;
+  local.face_in_mesh.assign(static_cast<std::size_t>(nf), kInvalidIndex);
+  std::vector<Index> vertex_in_mesh(static_cast<std::size_t>(t.vertex_count()), kInvalidIndex);
+  PolygonMesh& mesh = local.mesh;
+  mesh.tags = child_tags(level.tags);
+  for (const VertexChannel& c : level.vertex_channels) mesh.vertex_channels.push_back({c.name, c.components, {}});
+  for (Index f = 0; f < nf; ++f) {
+    const auto vertices = t.face_vertices(f);
+    if (std::none_of(vertices.begin(), vertices.end(), [&](Index v) { return near[static_cast<std::size_t>(v)] != 0; }))
+      continue;
+    if (2 * (mesh.face_count() + 1) > nf) return std::nullopt;
+    std::array<Index, 4> face;
+    for (std::size_t c = 0; c < 4; ++c) {
+      const auto v = static_cast<std::size_t>(vertices[c]);
+      if (vertex_in_mesh[v] == kInvalidIndex) {
+        vertex_in_mesh[v] = mesh.vertex_count();
+        mesh.positions.push_back(level.positions[v]);
+        for (std::size_t ch = 0; ch < level.vertex_channels.size(); ++ch) {
+          const VertexChannel& in = level.vertex_channels[ch];
+          const auto k = static_cast<std::size_t>(in.components);
+          mesh.vertex_channels[ch].values.insert(mesh.vertex_channels[ch].values.end(), in.values.begin() + v * k,
+                                                 in.values.begin() + (v + 1) * k);
+        }
+      }
+      face[c] = vertex_in_mesh[v];
+    }
+    local.face_in_mesh[static_cast<std::size_t>(f)] = mesh.add_face(face);
+  }
+  return local;
+}
+
+// The result's arrays, sized, and its tags: the level's options, with the
+// crease method refinement used (as the masks' levels name it).
+PolygonMesh sized_result(const PolygonMesh& level, const RefineOptions& options, const LevelCounts& counts) {
+  PolygonMesh out;
+  out.tags = child_tags(level.tags);
+  const CreaseMethod method = options.crease_method.value_or(level.tags.crease_method);
+  if (out.tags.crease_method != method) {
+    out.tags.crease_method = method;
+    out.tags.crease_method_set = true;
+  }
+  assign_large(out.positions, static_cast<std::size_t>(counts.vertices));
+  assign_large(out.face_offsets, static_cast<std::size_t>(counts.faces) + 1);
+  assign_large(out.face_indices, 4 * static_cast<std::size_t>(counts.faces));
+  for (const VertexChannel& c : level.vertex_channels) {
+    out.vertex_channels.push_back({c.name, c.components, {}});
+    assign_large(out.vertex_channels.back().values,
+                 static_cast<std::size_t>(counts.vertices) * static_cast<std::size_t>(c.components));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                            const RefineOptions& options, int levels) {
-  const RegularGrid* rule = scheme.fast_path.regular_grid;
-  // Deeper runs take their first levels by the masks, while the mesh is
-  // small, so that a face's grid stays within a few megabytes.
-  if (!rule || scheme.split != SplitRule::quad || scheme.steps || levels < 1 || levels > kMaxGridLevels)
-    return std::nullopt;
-  if (options.boundary_rules != BoundaryRules::standard || options.allow_non_manifold) return std::nullopt;
-  if (!level.vertex_channels.empty() || !level.face_varying_channels.empty()) return std::nullopt;
-  if (!level.tags.creases.empty() || !level.tags.corners.empty() || !level.tags.holes.empty()) return std::nullopt;
+  if (!covers(level, t, scheme, options, levels)) return std::nullopt;
   const Index nf = t.face_count();
-  for (Index f = 0; f < nf; ++f)
-    if (t.face_size(f) != 4) return std::nullopt;
-  for (Index v = 0; v < t.vertex_count(); ++v)
-    if (t.vertex_kind(v) == VertexKind::isolated) return std::nullopt;
 
   // The levels' counts, refused where the last one overflows the index type.
   std::vector<LevelCounts> counts{{nf, t.edge_count(), t.vertex_count()}};
@@ -240,72 +390,39 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
   constexpr auto kMax = static_cast<std::int64_t>(std::numeric_limits<Index>::max());
   if (4 * final_counts.faces > kMax || final_counts.vertices > kMax) return std::nullopt;
 
-  // Which faces are regular patches.
   std::vector<char> regular(static_cast<std::size_t>(nf));
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     std::array<Index, 16> patch;
     for (Index f = range.begin(); f != range.end(); ++f) regular[static_cast<std::size_t>(f)] = gather_patch(t, f, patch);
   });
-
-  // The other faces and those sharing a vertex with them: the mesh the masks
-  // refine. Its artificial boundary changes only points outside them.
-  std::vector<char> near(static_cast<std::size_t>(t.vertex_count()));
-  for (Index f = 0; f < nf; ++f)
-    if (!regular[static_cast<std::size_t>(f)])
-      for (const Index v : t.face_vertices(f)) near[static_cast<std::size_t>(v)] = 1;
-  std::vector<Index> local_face(static_cast<std::size_t>(nf), kInvalidIndex);
-  std::vector<Index> local_vertex(static_cast<std::size_t>(t.vertex_count()), kInvalidIndex);
-  PolygonMesh local;
-  local.tags = child_tags(level.tags);
-  Index local_faces = 0;
-  for (Index f = 0; f < nf; ++f) {
-    const auto vertices = t.face_vertices(f);
-    if (std::none_of(vertices.begin(), vertices.end(), [&](Index v) { return near[static_cast<std::size_t>(v)] != 0; }))
-      continue;
-    if (2 * ++local_faces > nf) return std::nullopt;  // mostly irregular: the masks first
-    std::array<Index, 4> face;
-    for (std::size_t c = 0; c < 4; ++c) {
-      Index& lv = local_vertex[static_cast<std::size_t>(vertices[c])];
-      if (lv == kInvalidIndex) {
-        lv = local.vertex_count();
-        local.positions.push_back(level.positions[static_cast<std::size_t>(vertices[c])]);
-      }
-      face[c] = lv;
-    }
-    local_face[static_cast<std::size_t>(f)] = local.add_face(face);
-  }
+  std::optional<MasksMesh> local = masks_mesh(level, t, regular);
+  if (!local) return std::nullopt;  // mostly irregular: the masks first
   PolygonMesh local_refined;
-  if (local_faces > 0) {
+  if (local->mesh.face_count() > 0) {
     RefineOptions by_masks = options;
     by_masks.levels = levels;
     by_masks.regular_grids = false;
     by_masks.on_level = nullptr;
     by_masks.allow_non_manifold = true;  // its rim may pinch; the points taken lie inside
-    local_refined = refine(local, scheme, by_masks);
+    local_refined = refine(local->mesh, scheme, by_masks);
   }
 
-  PolygonMesh out;
-  out.tags = child_tags(level.tags);
-  const CreaseMethod method = options.crease_method.value_or(level.tags.crease_method);
-  if (out.tags.crease_method != method) {  // as the masks' levels say how their tags were made
-    out.tags.crease_method = method;
-    out.tags.crease_method_set = true;
-  }
-  assign_large(out.positions, static_cast<std::size_t>(final_counts.vertices));
-  assign_large(out.face_offsets, static_cast<std::size_t>(final_counts.faces) + 1);
-  assign_large(out.face_indices, 4 * static_cast<std::size_t>(final_counts.faces));
-
-  const int n = 1 << levels;
+  PolygonMesh out = sized_result(level, options, final_counts);
+  const RegularGrid& rule = *scheme.fast_path.regular_grid;
+  const PointValues values(level);
+  const int width = values.width, n = 1 << levels, side = n + 3;
   const auto per_face = static_cast<Index>(final_counts.faces / nf);  // 4^levels
   tbb::enumerable_thread_specific<Scratch> scratch;
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 64), [&](const tbb::blocked_range<Index>& range) {
     Scratch& s = scratch.local();
+    s.size_for(n, width);
     std::array<Index, 16> patch;
     for (Index f = range.begin(); f != range.end(); ++f) {
       const Ownership own = ownership_of(t, f, n);
       const bool grid = regular[static_cast<std::size_t>(f)] != 0;
-      s.index.resize(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1));
-      const Index local_first = grid ? 0 : local_face[static_cast<std::size_t>(f)] * per_face;
+      // Faces, and where each vertex lies on the grid; the masks' points of
+      // the other faces straight from their mesh.
+      const Index local_first = grid ? 0 : local->face_in_mesh[static_cast<std::size_t>(f)] * per_face;
       auto emit = [&](const SubFace& sub) {
         const auto at = static_cast<std::size_t>(sub.face) * 4;
         out.face_offsets[static_cast<std::size_t>(sub.face)] = sub.face * 4;
@@ -315,21 +432,21 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
             s.index[static_cast<std::size_t>(sub.at[c].y * (n + 1) + sub.at[c].x)] = sub.vertex[c];
           } else if (own.owns(sub.at[c])) {
             const auto mine = static_cast<std::size_t>(local_first + (sub.face - f * per_face)) * 4 + c;
-            out.positions[static_cast<std::size_t>(sub.vertex[c])] =
-                local_refined.positions[static_cast<std::size_t>(local_refined.face_indices[mine])];
+            copy_point(local_refined, local_refined.face_indices[mine], sub.vertex[c], out);
           }
         }
       };
       for_each_final_face(root_of(t, f, n), 0, counts, emit);
       if (!grid) continue;
       gather_patch(t, f, patch);
-      refine_patch(*rule, patch, level.positions, levels, s);
-      const int side = n + 3;
+      for (std::size_t i = 0; i < 16; ++i) values.gather(patch[i], s.grid.data() + i * static_cast<std::size_t>(width));
+      if (width == 3) refine_patch<3>(rule, levels, width, s);
+      else refine_patch<0>(rule, levels, width, s);
       for (int y = 0; y <= n; ++y)
         for (int x = 0; x <= n; ++x)
           if (own.owns({x, y}))
-            out.positions[static_cast<std::size_t>(s.index[static_cast<std::size_t>(y * (n + 1) + x)])] =
-                s.grid[static_cast<std::size_t>((y + 1) * side + x + 1)];
+            scatter(s.grid.data() + static_cast<std::size_t>(((y + 1) * side + x + 1) * width),
+                    s.index[static_cast<std::size_t>(y * (n + 1) + x)], out);
     }
   });
   out.face_offsets.back() = static_cast<Index>(4 * final_counts.faces);

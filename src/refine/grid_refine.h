@@ -11,7 +11,8 @@
 // is everything their points read when no edge is tagged sharp. Vertex
 // numbers and faces of the result are computed by index arithmetic, so the
 // result is the masks' mesh (the same numbering, positions equal up to
-// rounding): one output array per level, written once. Each shared point is
+// rounding; vertex channels alike): one output array per level, written
+// once. Each shared point is
 // written by one owning face, so results do not depend on the thread count.
 
 #include <optional>
@@ -27,8 +28,8 @@ namespace subdiv::detail {
 /// mesh's face arrays may have been dropped) through the grid path, or
 /// nullopt where it does not apply: a scheme without a regular grid rule,
 /// piecewise-smooth rules or non-manifold refinement, a face that is not a
-/// quad, a sharp tag (crease, corner) or hole, vertex or face-varying
-/// channels, more than 8 levels; or where the mesh refined by the masks
+/// quad, a sharp tag (crease, corner) or hole, face-varying channels, more
+/// than 8 levels; or where the mesh refined by the masks
 /// would hold more than half the faces (the caller then refines one level by
 /// the masks and asks again).
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& topology,

@@ -3,7 +3,7 @@
 // stencil; refining with grids gives the masks' mesh (faces identical,
 // positions within 1e-14 of the mesh's size) on code-built, bundled and
 // shared meshes; results do not depend on the thread count; and the path
-// declines what it does not cover.
+// declines what it does not cover. Vertex channels take the same path.
 
 #include <gtest/gtest.h>
 
@@ -81,6 +81,29 @@ void expect_grids_equal_masks(const PolygonMesh& mesh, const Scheme& scheme, int
     if (d > worst) worst = d, at = v;
   }
   EXPECT_LE(worst, tolerance) << what << ": vertex " << at;
+  ASSERT_EQ(grids.vertex_channels.size(), masks.vertex_channels.size()) << what;
+  for (std::size_t ch = 0; ch < grids.vertex_channels.size(); ++ch) {
+    const VertexChannel& a = grids.vertex_channels[ch];
+    const VertexChannel& b = masks.vertex_channels[ch];
+    EXPECT_EQ(a.name, b.name) << what;
+    EXPECT_EQ(a.components, b.components) << what;
+    ASSERT_EQ(a.values.size(), b.values.size()) << what;
+    double scale = 1.0;  // the channel's largest value
+    for (const double v : b.values) scale = std::max(scale, std::abs(v));
+    for (std::size_t i = 0; i < a.values.size(); ++i)
+      ASSERT_NEAR(a.values[i], b.values[i], kRelativeTolerance * scale) << what << ": channel " << a.name << " value " << i;
+  }
+}
+
+// The mesh with two vertex channels, of one value and of three.
+PolygonMesh with_channels(PolygonMesh mesh) {
+  VertexChannel one{"height", 1, {}}, three{"colour", 3, {}};
+  for (const Vec3& p : mesh.positions) {
+    one.values.push_back(std::sin(3.0 * p.x + p.y));
+    for (const double c : {std::cos(p.z), p.x * p.y, 0.5 - p.z}) three.values.push_back(c);
+  }
+  mesh.vertex_channels = {one, three};
+  return mesh;
 }
 
 // Whether refine() takes the grid path for the last `remaining` levels of
@@ -150,7 +173,12 @@ TEST(GridRefine, EqualsTheMasksOnCodeBuiltMeshes) {
       expect_grids_equal_masks(torus(5), *scheme, levels, "torus, " + what);
       expect_grids_equal_masks(test::jittered(test::quad_grid(7, 5), 3), *scheme, levels, "open grid, " + what);
       expect_grids_equal_masks(test::jittered(test::cube(), 1), *scheme, levels + 2, "cube, " + what);
-      if (levels <= 2) expect_grids_equal_masks(test::jittered(test::quad_grid(24, 20), 4), *scheme, levels, "open grid, " + what);
+      if (levels <= 2) {
+        expect_grids_equal_masks(test::jittered(test::quad_grid(24, 20), 4), *scheme, levels, "open grid, " + what);
+        expect_grids_equal_masks(with_channels(test::jittered(test::quad_grid(24, 20), 4)), *scheme, levels,
+                                 "open grid with vertex channels, " + what);
+      }
+      expect_grids_equal_masks(with_channels(torus(5)), *scheme, levels, "torus with vertex channels, " + what);
     }
   }
   // The comparisons above covered both routes of the path: all-grid faces
@@ -177,8 +205,7 @@ TEST(GridRefine, EqualsTheMasksOnRealMeshes) {
       continue;  // the deliberately broken shapes
     }
     mesh.tags.boundary_interpolation = BoundaryInterpolation::edge_and_corner;
-    mesh.vertex_channels.clear();  // the grid path refines positions only
-    mesh.face_varying_channels.clear();
+    mesh.face_varying_channels.clear();  // split by the masks' levels: the grid path declines them
     if (!test::rejection(mesh, catmull_clark_scheme(), with_grids(true, 1)).empty()) continue;
     for (int levels = 1; levels <= 3; ++levels)
       expect_grids_equal_masks(mesh, catmull_clark_scheme(), levels, file.filename().string());
@@ -213,9 +240,12 @@ TEST(GridRefine, DeclinesWhatItDoesNotCover) {
   creased.tags.creases.push_back({0, 1, 2.0});
   EXPECT_FALSE(takes_grids(creased, catmull_clark_scheme(), 2));
 
-  PolygonMesh with_channel = plain;
-  with_channel.vertex_channels.push_back({"u", 1, std::vector<double>(plain.positions.size(), 1.0)});
-  EXPECT_FALSE(takes_grids(with_channel, catmull_clark_scheme(), 2));
+  EXPECT_TRUE(takes_grids(with_channels(plain), catmull_clark_scheme(), 2));
+  PolygonMesh face_varying = plain;  // face-varying channels split by the masks' levels
+  face_varying.face_varying_channels.push_back(
+      {"uv", 1, std::vector<double>(plain.face_indices.size(), 0.5), std::vector<Index>(plain.face_indices.size())});
+  for (std::size_t i = 0; i < plain.face_indices.size(); ++i) face_varying.face_varying_channels[0].indices[i] = static_cast<Index>(i);
+  EXPECT_FALSE(takes_grids(face_varying, catmull_clark_scheme(), 2));
 
   PolygonMesh with_triangle = plain;
   with_triangle.add_face({0, 7, 1});
