@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <functional>
 #include <string>
 
 #include "large_buffers.h"
@@ -15,6 +17,23 @@ StencilTable StencilTable::identity(Index n) {
   t.reserve(static_cast<std::size_t>(n), static_cast<std::size_t>(n));
   const double one = 1.0;
   for (Index i = 0; i < n; ++i) t.append_row(std::span<const Index>(&i, 1), std::span<const double>(&one, 1));
+  return t;
+}
+
+StencilTable StencilTable::from_rows(Index source_count, std::vector<Index> offsets, std::vector<Index> vertices,
+                                     std::vector<double> weights) {
+  if (offsets.empty() || offsets.front() != 0 || vertices.size() != weights.size() ||
+      static_cast<std::size_t>(offsets.back()) != vertices.size() ||
+      std::adjacent_find(offsets.begin(), offsets.end(), std::greater<>()) != offsets.end())
+    throw InvalidInputError("stencil rows: offsets must start at 0, never decrease and end at the entry count");
+  for (const Index v : vertices)
+    if (v < 0 || v >= source_count)
+      throw InvalidInputError("stencil row refers to vertex " + std::to_string(v) + " outside [0, " +
+                              std::to_string(source_count) + ")");
+  StencilTable t(source_count);
+  t.offsets_ = std::move(offsets);
+  t.vertices_ = std::move(vertices);
+  t.weights_ = std::move(weights);
   return t;
 }
 

@@ -1,6 +1,6 @@
-// The grid path (grid_refine.h): regular faces as tensor-product grids,
-// the others by the masks on a small mesh around them, and the result's
-// numbering by index arithmetic.
+// The grid path (grid_refine.h): regular faces as tensor-product grids
+// (grid_patch.h), the others by the masks on a small mesh around them, and
+// the result's numbering by index arithmetic (grid_numbering.h).
 
 #include "grid_refine.h"
 
@@ -8,6 +8,8 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <numeric>
+#include <utility>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -15,220 +17,12 @@
 #include <tbb/parallel_for.h>
 
 #include "../core/large_buffers.h"
+#include "grid_numbering.h"
+#include "grid_patch.h"
 
 namespace subdiv::detail {
 
 namespace {
-
-// The element counts of an all-quad level, and of its quad split.
-struct LevelCounts {
-  std::int64_t faces = 0, edges = 0, vertices = 0;
-  LevelCounts child() const { return {4 * faces, 2 * edges + 4 * faces, faces + edges + vertices}; }
-};
-
-// A point of a starting face's grid at the final level: x along its first
-// edge, y from its first corner towards its last, both in 0 .. n.
-struct GridPoint {
-  int x, y;
-};
-
-GridPoint midpoint(GridPoint a, GridPoint b) { return {(a.x + b.x) / 2, (a.y + b.y) / 2}; }
-
-// A face of some level inside one starting face: its number, its vertices,
-// its edges (edge c runs from vertex c to vertex c + 1) and where its
-// corners lie on the starting face's final grid. No member initializers:
-// four are made per split, and zeroing them first costs more than the split.
-struct SubFace {
-  Index face;
-  std::array<Index, 4> vertex, edge;
-  std::array<GridPoint, 4> at;
-};
-
-// The four children of `s` in the quad split of its level (`level` its
-// counts), numbered as split_topology() and MeshTopology::from_quad_split()
-// number them: child face c = corner c = [vertex point of vertex c, edge
-// point of edge c, face point, edge point of edge c - 1]; child vertices
-// [face points | edge points | vertex points]; child edges [the interior
-// edges (face point, edge point), 4 per face in the order of their parent
-// edges' numbers | the halves of each parent edge, the one at its smaller
-// vertex first].
-// Without `edges`, the children's edges are left unset (the last level's
-// faces need none).
-template <bool edges>
-void split_sub_face(const SubFace& s, const LevelCounts& level, std::array<SubFace, 4>& children) {
-  const auto edge_point = static_cast<Index>(level.faces);
-  const auto vertex_point = static_cast<Index>(level.faces + level.edges);
-  const auto halves = static_cast<Index>(4 * level.faces);
-  auto interior = [&](Index e) {
-    Index rank = 0;
-    for (const Index other : s.edge) rank += other < e;
-    return 4 * s.face + rank;
-  };
-  auto half = [&](Index e, Index end, Index other_end) { return halves + 2 * e + (end < other_end ? 0 : 1); };
-  const GridPoint centre = midpoint(s.at[0], s.at[2]);
-  for (int c = 0; c < 4; ++c) {
-    const int next = (c + 1) % 4, prev = (c + 3) % 4;
-    SubFace& child = children[static_cast<std::size_t>(c)];
-    child.face = 4 * s.face + c;
-    child.vertex = {vertex_point + s.vertex[c], edge_point + s.edge[c], s.face, edge_point + s.edge[prev]};
-    if constexpr (edges)
-      child.edge = {half(s.edge[c], s.vertex[c], s.vertex[next]), interior(s.edge[c]), interior(s.edge[prev]),
-                    half(s.edge[prev], s.vertex[c], s.vertex[prev])};
-    else
-      child.edge = {kInvalidIndex, kInvalidIndex, kInvalidIndex, kInvalidIndex};
-    child.at = {s.at[c], midpoint(s.at[c], s.at[next]), centre, midpoint(s.at[prev], s.at[c])};
-  }
-}
-
-// Calls emit(sub-face) for each face of the last level inside `s`, in
-// increasing order; counts[j] are the counts of the level at depth j.
-template <typename Emit>
-void for_each_final_face(const SubFace& s, std::size_t depth, std::span<const LevelCounts> counts, Emit& emit) {
-  if (depth == counts.size()) return emit(s);
-  std::array<SubFace, 4> children;
-  if (depth + 1 == counts.size()) {
-    split_sub_face<false>(s, counts[depth], children);
-    for (const SubFace& child : children) emit(child);
-    return;
-  }
-  split_sub_face<true>(s, counts[depth], children);
-  for (const SubFace& child : children) for_each_final_face(child, depth + 1, counts, emit);
-}
-
-// A starting face as the root of its sub-faces, its corners at the grid's
-// corners (0, 0), (n, 0), (n, n), (0, n).
-SubFace root_of(const MeshTopology& t, Index f, int n) {
-  SubFace s;
-  s.face = f;
-  const Index first = t.face_first_corner(f);
-  for (int c = 0; c < 4; ++c) {
-    s.vertex[c] = t.corner_vertex(first + c);
-    s.edge[c] = t.corner_edge(first + c);
-  }
-  s.at = {GridPoint{0, 0}, GridPoint{n, 0}, GridPoint{n, n}, GridPoint{0, n}};
-  return s;
-}
-
-// The 16 control points of face f's bicubic patch, row-major from (-1, -1)
-// to (2, 2) in the face's frame (corners at (0, 0), (1, 0), (1, 1), (0, 1));
-// false unless every corner is an interior vertex with four quads around it
-// and the 16 points are distinct.
-bool gather_patch(const MeshTopology& t, Index f, std::array<Index, 16>& patch) {
-  static constexpr int kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  patch.fill(kInvalidIndex);
-  const Index first = t.face_first_corner(f);
-  for (int c = 0; c < 4; ++c) {
-    const Index v = t.corner_vertex(first + c);
-    if (t.vertex_kind(v) != VertexKind::interior || t.valence(v) != 4 || t.vertex_face_count(v) != 4) return false;
-    // The frame of the corner: x towards the next corner, y towards the previous.
-    int x[2] = {kCorner[(c + 1) % 4][0] - kCorner[c][0], kCorner[(c + 1) % 4][1] - kCorner[c][1]};
-    int y[2] = {kCorner[(c + 3) % 4][0] - kCorner[c][0], kCorner[(c + 3) % 4][1] - kCorner[c][1]};
-    Index corner = first + c;
-    for (int turn = 0; turn < 4; ++turn) {
-      if (t.face_size(t.corner_face(corner)) != 4) return false;
-      const Index next = t.corner_next(corner), prev = t.corner_prev(corner);
-      const std::pair<Index, std::array<int, 2>> points[3] = {
-          {t.corner_vertex(next), {1, 0}}, {t.corner_vertex(t.corner_next(next)), {1, 1}}, {t.corner_vertex(prev), {0, 1}}};
-      for (const auto& [vertex, along] : points) {
-        const int px = kCorner[c][0] + along[0] * x[0] + along[1] * y[0];
-        const int py = kCorner[c][1] + along[0] * x[1] + along[1] * y[1];
-        Index& slot = patch[static_cast<std::size_t>((py + 1) * 4 + px + 1)];
-        if (slot != kInvalidIndex && slot != vertex) return false;
-        slot = vertex;
-      }
-      // The next face around v, across the edge towards `prev`; its frame
-      // is this one turned a quarter.
-      corner = t.corner_across(prev);
-      if (corner == kInvalidIndex || t.corner_vertex(corner) != v) return false;
-      std::swap(x, y);
-      y[0] = -y[0];
-      y[1] = -y[1];
-    }
-    if (corner != first + c) return false;
-  }
-  std::array<Index, 16> sorted = patch;
-  std::sort(sorted.begin(), sorted.end());
-  return sorted.front() != kInvalidIndex && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
-}
-
-// Face f's share of the shared points: a corner vertex belongs to the face
-// of its first corner, an edge's inner points to the face of its first side.
-struct Ownership {
-  std::array<bool, 4> corner{}, edge{};
-  int n = 0;
-  bool owns(GridPoint p) const {
-    if (p.y == 0) return p.x == 0 ? corner[0] : p.x == n ? corner[1] : edge[0];
-    if (p.y == n) return p.x == n ? corner[2] : p.x == 0 ? corner[3] : edge[2];
-    if (p.x == n) return edge[1];
-    if (p.x == 0) return edge[3];
-    return true;
-  }
-};
-
-Ownership ownership_of(const MeshTopology& t, Index f, int n) {
-  Ownership o;
-  o.n = n;
-  const Index first = t.face_first_corner(f);
-  for (int c = 0; c < 4; ++c) {
-    o.corner[c] = t.corner_face(t.vertex_corners(t.corner_vertex(first + c)).front()) == f;
-    o.edge[c] = t.corner_face(t.edge_corners(t.corner_edge(first + c)).front()) == f;
-  }
-  return o;
-}
-
-// One step of the tensor stencil along a line of m points (`in_stride`
-// points apart), making 2m - 3 points (`out_stride` apart): the line's points
-// from -1 to n + 1 become those from -1 to 2n + 1. A point is `width`
-// doubles (kWidth where known at compile time, 0 otherwise).
-template <int kWidth>
-void refine_line(const RegularGrid& rule, const double* in, std::ptrdiff_t in_stride, int m, double* out,
-                 std::ptrdiff_t out_stride, int width) {
-  const std::ptrdiff_t w = kWidth > 0 ? kWidth : width;
-  const std::ptrdiff_t is = in_stride * w, os = out_stride * w;
-  const int fine = 2 * m - 3;
-  for (int t = 0; t < fine; ++t) {
-    const double* a = in + (t / 2) * is;
-    double* o = out + t * os;
-    if (t % 2 == 0) {
-      for (std::ptrdiff_t j = 0; j < w; ++j) o[j] = rule.odd[0] * a[j] + rule.odd[1] * a[is + j];
-    } else {
-      for (std::ptrdiff_t j = 0; j < w; ++j)
-        o[j] = rule.even[0] * a[j] + rule.even[1] * a[is + j] + rule.even[2] * a[2 * is + j];
-    }
-  }
-}
-
-// A thread's working arrays, sized once for the final level's grid.
-struct Scratch {
-  std::vector<double> grid, rows, refined;
-  std::vector<Index> index;  // the final vertex number of each grid point
-
-  void size_for(int n, int width) {
-    const auto side = static_cast<std::size_t>(n + 3);
-    const std::size_t doubles = side * side * static_cast<std::size_t>(width);
-    if (grid.size() >= doubles) return;
-    grid.resize(doubles);
-    rows.resize(doubles);
-    refined.resize(doubles);
-    index.resize(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1));
-  }
-};
-
-// Refines the 4 x 4 control values in scratch.grid `levels` times: the
-// (n + 3)^2 grid of the patch's points from -1 to n + 1, in scratch.grid.
-template <int kWidth>
-void refine_patch(const RegularGrid& rule, int levels, int width, Scratch& s) {
-  int m = 4;
-  for (int l = 0; l < levels; ++l) {
-    const int fine = 2 * m - 3;
-    for (int r = 0; r < m; ++r)
-      refine_line<kWidth>(rule, s.grid.data() + r * m * width, 1, m, s.rows.data() + r * fine * width, 1, width);
-    for (int col = 0; col < fine; ++col)
-      refine_line<kWidth>(rule, s.rows.data() + col * width, fine, m, s.refined.data() + col * width, fine, width);
-    s.grid.swap(s.refined);
-    m = fine;
-  }
-}
 
 // The values refined per point: the position, then each vertex channel's.
 struct PointValues {
@@ -314,6 +108,7 @@ bool covers(const PolygonMesh& level, const MeshTopology& t, const Scheme& schem
 struct MasksMesh {
   PolygonMesh mesh;
   std::vector<Index> face_in_mesh;
+  std::vector<Index> level_vertex;  // of each of its vertices
 };
 
 // nullopt where it would hold more than half the faces.
@@ -339,6 +134,7 @@ std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology
       const auto v = static_cast<std::size_t>(vertices[c]);
       if (vertex_in_mesh[v] == kInvalidIndex) {
         vertex_in_mesh[v] = mesh.vertex_count();
+        local.level_vertex.push_back(vertices[c]);
         mesh.positions.push_back(level.positions[v]);
         for (std::size_t ch = 0; ch < level.vertex_channels.size(); ++ch) {
           const VertexChannel& in = level.vertex_channels[ch];
@@ -375,82 +171,207 @@ PolygonMesh sized_result(const PolygonMesh& level, const RefineOptions& options,
   return out;
 }
 
+
+// What the positions and the stencils of the grid path share: the levels'
+// counts, which faces are regular, and the masks' mesh of the others.
+struct GridPlan {
+  const MeshTopology& topology;
+  int levels = 0;
+  int n = 0;                        // grid intervals per face side: 2^levels
+  Index per_face = 0;               // final faces per face: 4^levels
+  std::vector<LevelCounts> counts = {};  // of the levels before the last
+  LevelCounts last = {};
+  std::vector<char> regular = {};
+  MasksMesh local = {};
+  RefineOptions by_masks = {};  // for the masks' mesh
+};
+
+std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
+                                   const RefineOptions& options, int levels) {
+  if (!covers(level, t, scheme, options, levels)) return std::nullopt;
+  const Index nf = t.face_count();
+  GridPlan plan{.topology = t, .levels = levels, .n = 1 << levels};
+  plan.counts.push_back({nf, t.edge_count(), t.vertex_count()});
+  for (int l = 0; l < levels; ++l) plan.counts.push_back(plan.counts.back().child());
+  plan.last = plan.counts.back();
+  plan.counts.pop_back();
+  // Refused where the last level overflows the index type.
+  constexpr auto kMax = static_cast<std::int64_t>(std::numeric_limits<Index>::max());
+  if (4 * plan.last.faces > kMax || plan.last.vertices > kMax) return std::nullopt;
+  plan.per_face = static_cast<Index>(plan.last.faces / nf);
+
+  plan.regular.resize(static_cast<std::size_t>(nf));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
+    std::array<Index, 16> patch;
+    for (Index f = range.begin(); f != range.end(); ++f)
+      plan.regular[static_cast<std::size_t>(f)] = gather_patch(t, f, patch);
+  });
+  std::optional<MasksMesh> local = masks_mesh(level, t, plan.regular);
+  if (!local) return std::nullopt;  // mostly irregular: the masks first
+  plan.local = std::move(*local);
+  plan.by_masks = options;
+  plan.by_masks.levels = levels;
+  plan.by_masks.regular_grids = false;
+  plan.by_masks.on_level = nullptr;
+  plan.by_masks.allow_non_manifold = true;  // its rim may pinch; the points taken lie inside
+  return plan;
+}
+
+// Walks face f's final faces (on_face(sub-face) for each) and records, for
+// each point of its grid, its final vertex number (s.index) and, for a face
+// of the masks' mesh, the point's number in that mesh's refinement, whose
+// faces are `local_faces` (s.local_index).
+template <typename OnFace>
+void walk_face(const GridPlan& plan, Index f, std::span<const Index> local_faces, Scratch& s, OnFace&& on_face) {
+  const bool grid = plan.regular[static_cast<std::size_t>(f)] != 0;
+  const int stride = plan.n + 1;
+  const Index local_first = grid ? 0 : plan.local.face_in_mesh[static_cast<std::size_t>(f)] * plan.per_face;
+  auto emit = [&](const SubFace& sub) {
+    on_face(sub);
+    const auto mine = static_cast<std::size_t>(local_first + (sub.face - f * plan.per_face)) * 4;
+    for (std::size_t c = 0; c < 4; ++c) {
+      const auto at = static_cast<std::size_t>(sub.at[c].y * stride + sub.at[c].x);
+      s.index[at] = sub.vertex[c];
+      if (!grid) s.local_index[at] = local_faces[mine + c];
+    }
+  };
+  for_each_final_face(root_of(plan.topology, f, plan.n), 0, plan.counts, emit);
+}
+
+// Calls fn(x, y, at) for each point of face f's grid that f owns, `at` its
+// place in the scratch index arrays.
+template <typename Fn>
+void for_each_owned_point(const GridPlan& plan, Index f, Fn&& fn) {
+  const Ownership own = ownership_of(plan.topology, f, plan.n);
+  for (int y = 0; y <= plan.n; ++y)
+    for (int x = 0; x <= plan.n; ++x)
+      if (own.owns({x, y})) fn(x, y, static_cast<std::size_t>(y * (plan.n + 1) + x));
+}
+
 }  // namespace
 
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                            const RefineOptions& options, int levels) {
-  if (!covers(level, t, scheme, options, levels)) return std::nullopt;
-  const Index nf = t.face_count();
-
-  // The levels' counts, refused where the last one overflows the index type.
-  std::vector<LevelCounts> counts{{nf, t.edge_count(), t.vertex_count()}};
-  for (int l = 0; l < levels; ++l) counts.push_back(counts.back().child());
-  const LevelCounts final_counts = counts.back();
-  counts.pop_back();
-  constexpr auto kMax = static_cast<std::int64_t>(std::numeric_limits<Index>::max());
-  if (4 * final_counts.faces > kMax || final_counts.vertices > kMax) return std::nullopt;
-
-  std::vector<char> regular(static_cast<std::size_t>(nf));
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::array<Index, 16> patch;
-    for (Index f = range.begin(); f != range.end(); ++f) regular[static_cast<std::size_t>(f)] = gather_patch(t, f, patch);
-  });
-  std::optional<MasksMesh> local = masks_mesh(level, t, regular);
-  if (!local) return std::nullopt;  // mostly irregular: the masks first
+  std::optional<GridPlan> plan = plan_grids(level, t, scheme, options, levels);
+  if (!plan) return std::nullopt;
   PolygonMesh local_refined;
-  if (local->mesh.face_count() > 0) {
-    RefineOptions by_masks = options;
-    by_masks.levels = levels;
-    by_masks.regular_grids = false;
-    by_masks.on_level = nullptr;
-    by_masks.allow_non_manifold = true;  // its rim may pinch; the points taken lie inside
-    local_refined = refine(local->mesh, scheme, by_masks);
-  }
+  if (plan->local.mesh.face_count() > 0) local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
 
-  PolygonMesh out = sized_result(level, options, final_counts);
+  PolygonMesh out = sized_result(level, options, plan->last);
   const RegularGrid& rule = *scheme.fast_path.regular_grid;
   const PointValues values(level);
-  const int width = values.width, n = 1 << levels, side = n + 3;
-  const auto per_face = static_cast<Index>(final_counts.faces / nf);  // 4^levels
+  const int width = values.width, n = plan->n, side = n + 3;
   tbb::enumerable_thread_specific<Scratch> scratch;
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 64), [&](const tbb::blocked_range<Index>& range) {
+  tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
     Scratch& s = scratch.local();
     s.size_for(n, width);
     std::array<Index, 16> patch;
     for (Index f = range.begin(); f != range.end(); ++f) {
-      const Ownership own = ownership_of(t, f, n);
-      const bool grid = regular[static_cast<std::size_t>(f)] != 0;
-      // Faces, and where each vertex lies on the grid; the masks' points of
-      // the other faces straight from their mesh.
-      const Index local_first = grid ? 0 : local->face_in_mesh[static_cast<std::size_t>(f)] * per_face;
-      auto emit = [&](const SubFace& sub) {
+      walk_face(*plan, f, local_refined.face_indices, s, [&](const SubFace& sub) {
         const auto at = static_cast<std::size_t>(sub.face) * 4;
         out.face_offsets[static_cast<std::size_t>(sub.face)] = sub.face * 4;
-        for (std::size_t c = 0; c < 4; ++c) {
-          out.face_indices[at + c] = sub.vertex[c];
-          if (grid) {
-            s.index[static_cast<std::size_t>(sub.at[c].y * (n + 1) + sub.at[c].x)] = sub.vertex[c];
-          } else if (own.owns(sub.at[c])) {
-            const auto mine = static_cast<std::size_t>(local_first + (sub.face - f * per_face)) * 4 + c;
-            copy_point(local_refined, local_refined.face_indices[mine], sub.vertex[c], out);
-          }
-        }
-      };
-      for_each_final_face(root_of(t, f, n), 0, counts, emit);
-      if (!grid) continue;
+        std::copy(sub.vertex.begin(), sub.vertex.end(), out.face_indices.begin() + static_cast<std::ptrdiff_t>(at));
+      });
+      if (!plan->regular[static_cast<std::size_t>(f)]) {
+        for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
+          copy_point(local_refined, s.local_index[at], s.index[at], out);
+        });
+        continue;
+      }
       gather_patch(t, f, patch);
       for (std::size_t i = 0; i < 16; ++i) values.gather(patch[i], s.grid.data() + i * static_cast<std::size_t>(width));
       if (width == 3) refine_patch<3>(rule, levels, width, s);
       else refine_patch<0>(rule, levels, width, s);
-      for (int y = 0; y <= n; ++y)
-        for (int x = 0; x <= n; ++x)
-          if (own.owns({x, y}))
-            scatter(s.grid.data() + static_cast<std::size_t>(((y + 1) * side + x + 1) * width),
-                    s.index[static_cast<std::size_t>(y * (n + 1) + x)], out);
+      for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
+        scatter(s.grid.data() + static_cast<std::size_t>(((y + 1) * side + x + 1) * width), s.index[at], out);
+      });
     }
   });
-  out.face_offsets.back() = static_cast<Index>(4 * final_counts.faces);
+  out.face_offsets.back() = static_cast<Index>(4 * plan->last.faces);
   return out;
+}
+
+std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
+                                              const RefineOptions& options, int levels) {
+  std::optional<GridPlan> plan = plan_grids(level, t, scheme, options, levels);
+  if (!plan) return std::nullopt;
+  // The masks' mesh: its last level's faces (to place its points) and its table.
+  PolygonMesh local_refined;
+  StencilTable local_table;
+  if (plan->local.mesh.face_count() > 0) {
+    local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
+    local_table = refine_stencil_table(plan->local.mesh, scheme, plan->by_masks);
+  }
+  const std::vector<std::array<double, 4>> weights = line_weights(*scheme.fast_path.regular_grid, levels);
+  auto row_size = [&](int x, int y) {
+    Index size = 0;
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i)
+        size += weights[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] *
+                    weights[static_cast<std::size_t>(y)][static_cast<std::size_t>(j)] != 0.0;
+    return size;
+  };
+
+  // Each vertex's row size, from its owning face; then the rows in place.
+  const auto rows = static_cast<std::size_t>(plan->last.vertices);
+  std::vector<Index> offsets;
+  assign_large(offsets, rows + 1, 0);
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  auto for_each_face = [&](auto&& body) {
+    tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
+      Scratch& s = scratch.local();
+      s.size_for(plan->n, 1);
+      for (Index f = range.begin(); f != range.end(); ++f) {
+        walk_face(*plan, f, local_refined.face_indices, s, [](const SubFace&) {});
+        body(f, s);
+      }
+    });
+  };
+  for_each_face([&](Index f, const Scratch& s) {
+    const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
+    for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
+      offsets[static_cast<std::size_t>(s.index[at]) + 1] =
+          grid ? row_size(x, y) : static_cast<Index>(local_table.row_vertices(s.local_index[at]).size());
+    });
+  });
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  if (offsets.back() < 0 || static_cast<std::int64_t>(offsets.back()) > std::numeric_limits<Index>::max())
+    return std::nullopt;
+  std::vector<Index> sources;
+  std::vector<double> row_weights;
+  assign_large(sources, static_cast<std::size_t>(offsets.back()));
+  assign_large(row_weights, static_cast<std::size_t>(offsets.back()));
+  for_each_face([&](Index f, const Scratch& s) {
+    const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
+    std::array<Index, 16> patch;
+    if (grid) gather_patch(t, f, patch);
+    std::array<std::pair<Index, double>, 16> entries;
+    for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
+      std::size_t count = 0;
+      if (grid) {
+        for (int j = 0; j < 4; ++j)
+          for (int i = 0; i < 4; ++i) {
+            const double w = weights[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] *
+                             weights[static_cast<std::size_t>(y)][static_cast<std::size_t>(j)];
+            if (w != 0.0) entries[count++] = {patch[static_cast<std::size_t>(4 * j + i)], w};
+          }
+      }
+      const auto vs = grid ? std::span<const Index>() : local_table.row_vertices(s.local_index[at]);
+      const auto ws = grid ? std::span<const double>() : local_table.row_weights(s.local_index[at]);
+      std::vector<std::pair<Index, double>> mapped;  // a masks' row over the level's vertices
+      for (std::size_t k = 0; k < vs.size(); ++k)
+        mapped.emplace_back(plan->local.level_vertex[static_cast<std::size_t>(vs[k])], ws[k]);
+      const std::span<std::pair<Index, double>> row =
+          grid ? std::span<std::pair<Index, double>>(entries.data(), count) : std::span<std::pair<Index, double>>(mapped);
+      std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      auto out = static_cast<std::size_t>(offsets[static_cast<std::size_t>(s.index[at])]);
+      for (const auto& [vertex, w] : row) {
+        sources[out] = vertex;
+        row_weights[out++] = w;
+      }
+    });
+  });
+  return StencilTable::from_rows(t.vertex_count(), std::move(offsets), std::move(sources), std::move(row_weights));
 }
 
 }  // namespace subdiv::detail

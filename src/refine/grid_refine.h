@@ -17,6 +17,7 @@
 
 #include <optional>
 
+#include "subdiv/core/stencil_table.h"
 #include "subdiv/mesh/polygon_mesh.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
@@ -34,5 +35,13 @@ namespace subdiv::detail {
 /// the masks and asks again).
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& topology,
                                            const Scheme& scheme, const RefineOptions& options, int levels);
+
+/// The same levels as one stencil table, `level`'s vertices -> the last
+/// level's (refine_stencil_table()'s rows: merged, sorted by source): a
+/// regular face's points as the products of the stencil's line weights over
+/// its 16 control points, the others' rows from the masks' mesh. nullopt
+/// where refine_as_grids() declines.
+std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const MeshTopology& topology,
+                                              const Scheme& scheme, const RefineOptions& options, int levels);
 
 }  // namespace subdiv::detail

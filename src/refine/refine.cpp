@@ -238,8 +238,9 @@ bool takes_two_steps(const Scheme& scheme, const PolygonMesh& mesh, const MeshTo
 // faces otherwise; `step(parent, topology, l, level_scheme)` refines one
 // level with `scheme`, or two with scheme.fast_path.two_steps where they apply.
 // `finish(level, topology, remaining)`, where given, may make the remaining
-// levels at once (the grid path); it is asked before each level.
-using Finish = std::function<std::optional<PolygonMesh>(const PolygonMesh&, const MeshTopology&, int)>;
+// levels at once (the grid path) and keep what it made; it is asked before
+// each level, and refine_levels() returns an empty mesh once it says true.
+using Finish = std::function<bool(const PolygonMesh&, const MeshTopology&, int)>;
 
 template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
@@ -253,12 +254,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
   const int last = options.start_level + options.levels;
   for (int l = options.start_level; l < last;) {
     if (!topology) topology.emplace(current);
-    if (finish) {
-      if (std::optional<PolygonMesh> done = finish(current, *topology, last - l)) {
-        if (options.on_level) options.on_level(options.levels, *done);
-        return std::move(*done);
-      }
-    }
+    if (finish && finish(current, *topology, last - l)) return PolygonMesh{};
     const bool twice = !every_level && l + 2 <= last && takes_two_steps(scheme, current, *topology);
     const Scheme& level_scheme = twice ? *scheme.fast_path.two_steps : scheme;
     Level level = step(current, *topology, l, level_scheme);
@@ -534,10 +530,12 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
   PolygonMesh result;
+  std::optional<PolygonMesh> by_grids;
   Finish as_grids;
   if (options.regular_grids && scheme.fast_path.regular_grid)
     as_grids = [&](const PolygonMesh& level, const MeshTopology& topology, int remaining) {
-      return detail::refine_as_grids(level, topology, scheme, options, remaining);
+      by_grids = detail::refine_as_grids(level, topology, scheme, options, remaining);
+      return by_grids.has_value();
     };
   run_with_threads(options.threads, [&] {
     result = refine_levels(
@@ -552,6 +550,10 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
         },
         nullptr, false, as_grids);
   });
+  if (by_grids) {
+    result = std::move(*by_grids);
+    if (options.on_level) options.on_level(options.levels, result);
+  }
   return result;
 }
 
@@ -616,17 +618,28 @@ StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme,
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
   std::optional<StencilTable> total;
+  Finish as_grids;  // the remaining levels' table by the grid path, composed onto the levels' before
+  if (options.regular_grids && scheme.fast_path.regular_grid)
+    as_grids = [&](const PolygonMesh& level, const MeshTopology& topology, int remaining) {
+      std::optional<StencilTable> rest = detail::stencils_as_grids(level, topology, scheme, options, remaining);
+      if (!rest) return false;
+      total = total ? total->then(*rest) : std::move(*rest);
+      return true;
+    };
   run_with_threads(options.threads, [&] {
-    refine_levels(mesh, std::move(coarse), scheme, options,
-                  [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
-      Level level = refine_level(parent, topology, l, level_scheme, boundary, method, options,
-                                 [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv, bool) {
-                                   total = record_stencils(view, step, lv.map, total ? &*total : nullptr);
-                                   detail::apply_flatness(lv.flatness, *total);
-                                 });
-      if (splits_read_positions(scheme)) total->apply(mesh.positions, level.child.positions);
-      return level;
-    });
+    refine_levels(
+        mesh, std::move(coarse), scheme, options,
+        [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
+          Level level = refine_level(parent, topology, l, level_scheme, boundary, method, options,
+                                     [&](const ParentLevel& view, const Scheme& step, const PolygonMesh&, Level& lv,
+                                         bool) {
+                                       total = record_stencils(view, step, lv.map, total ? &*total : nullptr);
+                                       detail::apply_flatness(lv.flatness, *total);
+                                     });
+          if (splits_read_positions(scheme)) total->apply(mesh.positions, level.child.positions);
+          return level;
+        },
+        nullptr, false, as_grids);
   });
   return total ? std::move(*total) : StencilTable::identity(mesh.vertex_count());
 }

@@ -1,8 +1,9 @@
 // The grid path of refine() (src/refine/grid_refine.h) against its
 // definition, the masks: the declared grid rule is the masks' regular
 // stencil; refining with grids gives the masks' mesh (faces identical,
-// positions within 1e-14 of the mesh's size) on code-built, bundled and
-// shared meshes; results do not depend on the thread count; and the path
+// positions within 1e-14 of the mesh's size) and the masks' stencil tables
+// on code-built, bundled and shared meshes; results do not depend on the
+// thread count; and the path
 // declines what it does not cover. Vertex channels take the same path.
 
 #include <gtest/gtest.h>
@@ -92,6 +93,22 @@ void expect_grids_equal_masks(const PolygonMesh& mesh, const Scheme& scheme, int
     for (const double v : b.values) scale = std::max(scale, std::abs(v));
     for (std::size_t i = 0; i < a.values.size(); ++i)
       ASSERT_NEAR(a.values[i], b.values[i], kRelativeTolerance * scale) << what << ": channel " << a.name << " value " << i;
+  }
+}
+
+// The grid path's stencil table equals the masks': the same rows, with the
+// same sources, weights within 1e-14.
+void expect_grid_stencils_equal_masks(const PolygonMesh& mesh, const Scheme& scheme, int levels,
+                                      const std::string& what) {
+  const StencilTable grids = refine_stencil_table(mesh, scheme, with_grids(true, levels));
+  const StencilTable masks = refine_stencil_table(mesh, scheme, with_grids(false, levels));
+  ASSERT_EQ(grids.source_count(), masks.source_count()) << what;
+  ASSERT_EQ(grids.row_count(), masks.row_count()) << what;
+  for (Index r = 0; r < grids.row_count(); ++r) {
+    const auto gv = grids.row_vertices(r), mv = masks.row_vertices(r);
+    ASSERT_EQ(std::vector<Index>(gv.begin(), gv.end()), std::vector<Index>(mv.begin(), mv.end())) << what << ": row " << r;
+    const auto gw = grids.row_weights(r), mw = masks.row_weights(r);
+    for (std::size_t j = 0; j < gw.size(); ++j) ASSERT_NEAR(gw[j], mw[j], kRelativeTolerance) << what << ": row " << r;
   }
 }
 
@@ -220,6 +237,18 @@ TEST(GridRefine, EqualsTheMasksOnRealMeshes) {
   if (!fs::is_directory(shapes)) GTEST_SKIP() << "shared OpenSubdiv shapes not found at " << shapes << "; bundled meshes only";
 }
 
+TEST(GridRefine, StencilTablesEqualTheMasks) {
+  for (const Scheme* scheme : {&catmull_clark_scheme(), &bilinear_scheme()})
+    for (int levels = 1; levels <= 3; ++levels) {
+      const std::string what = std::string(scheme->name) + ", " + std::to_string(levels) + " levels";
+      expect_grid_stencils_equal_masks(torus(5), *scheme, levels, "torus, " + what);
+      expect_grid_stencils_equal_masks(test::jittered(test::quad_grid(24, 20), 4), *scheme, levels, "open grid, " + what);
+      expect_grid_stencils_equal_masks(test::cube(), *scheme, levels + 2, "cube, " + what);
+      expect_grid_stencils_equal_masks(read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh, *scheme, levels,
+                                       "spot, " + what);
+    }
+}
+
 TEST(GridRefine, SameResultForAnyThreadCount) {
   for (const PolygonMesh& mesh : {torus(40), test::jittered(test::quad_grid(30, 20), 5)}) {
     RefineOptions one = with_grids(true, 3), two = one;
@@ -229,6 +258,13 @@ TEST(GridRefine, SameResultForAnyThreadCount) {
     const PolygonMesh b = refine(mesh, catmull_clark_scheme(), two);
     EXPECT_EQ(a.face_indices, b.face_indices);
     EXPECT_TRUE(a.positions == b.positions) << "positions differ between one and two threads";
+    const StencilTable c = refine_stencil_table(mesh, catmull_clark_scheme(), one);
+    const StencilTable d = refine_stencil_table(mesh, catmull_clark_scheme(), two);
+    ASSERT_EQ(c.row_count(), d.row_count());
+    for (Index r = 0; r < c.row_count(); ++r) {
+      ASSERT_TRUE(std::ranges::equal(c.row_vertices(r), d.row_vertices(r))) << "row " << r;
+      ASSERT_TRUE(std::ranges::equal(c.row_weights(r), d.row_weights(r))) << "row " << r;
+    }
   }
 }
 

@@ -18,6 +18,12 @@ class StencilTable {
   explicit StencilTable(Index source_count) : source_count_(source_count) {}
   /// The identity on n vertices.
   static StencilTable identity(Index n);
+  /// A table from its arrays: row r's entries are [offsets[r], offsets[r+1])
+  /// of `vertices` and `weights`. Throws InvalidInputError unless offsets
+  /// start at 0, never decrease and end at the entry count, and every vertex
+  /// is a source.
+  static StencilTable from_rows(Index source_count, std::vector<Index> offsets, std::vector<Index> vertices,
+                                std::vector<double> weights);
 
   Index source_count() const { return source_count_; }
   Index row_count() const { return static_cast<Index>(offsets_.size()) - 1; }

@@ -76,9 +76,10 @@ struct RefineOptions : RuleOptions {
   /// Refine the regular faces of schemes that declare a grid rule
   /// (FastPath::regular_grid: Catmull-Clark, bilinear) as grids, the
   /// remaining levels at once, where the level has only quads and no sharp
-  /// tags, vertex or face-varying channels (refine() only). The result is the
-  /// same mesh, numbering included, with positions equal up to rounding;
-  /// false: the masks everywhere, level by level.
+  /// tags or face-varying channels (refine() and refine_stencil_table()). The
+  /// result is the same mesh, numbering included, with positions, vertex
+  /// channels and stencil weights equal up to rounding; false: the masks
+  /// everywhere, level by level.
   bool regular_grids = true;
   /// Called after each level with its number counted from this call
   /// (1-based) and the level's mesh.
