@@ -78,10 +78,11 @@ BENCHMARK_CAPTURE(BM_Refine_QuadScheme, kobbelt, "kobbelt")->Args({158, 3, 1})->
 
 // Stencil path: build the table once (coarse -> level 2; arguments: mesh
 // size, levels, threads), then re-apply it to new positions, as for animation.
-void BM_StencilBuild_CatmullClark(benchmark::State& state) {
+void stencil_build_bench(benchmark::State& state, bool grids) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
   RefineOptions options;
   options.levels = static_cast<int>(state.range(1));
+  options.regular_grids = grids;
   const int threads = static_cast<int>(state.range(2));
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
   for (auto _ : state) {
@@ -89,7 +90,11 @@ void BM_StencilBuild_CatmullClark(benchmark::State& state) {
     benchmark::DoNotOptimize(table.entry_count());
   }
 }
+void BM_StencilBuild_CatmullClark(benchmark::State& state) { stencil_build_bench(state, true); }
 BENCHMARK(BM_StencilBuild_CatmullClark)->Args({158, 2, 1})->Args({158, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+// The masks alone (RefineOptions::regular_grids off).
+void BM_StencilBuild_CatmullClark_ByMasks(benchmark::State& state) { stencil_build_bench(state, false); }
+BENCHMARK(BM_StencilBuild_CatmullClark_ByMasks)->Args({158, 2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_StencilApply_CatmullClark(benchmark::State& state) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
