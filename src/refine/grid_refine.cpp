@@ -67,16 +67,84 @@ void copy_point(const PolygonMesh& in, Index from, Index to, PolygonMesh& out) {
 
 constexpr int kMaxGridLevels = 8;
 
-// The tags of a level made from `parent`: its options without its element
-// tags (the callers refuse sharp ones) and without tags no module reads,
-// which name the parent's elements.
-Tags child_tags(const Tags& parent) {
+// The options of a level's tags, without its element tags and without tags
+// no module reads, which name the level's elements.
+Tags tag_options(const Tags& parent) {
   Tags tags = parent;
   tags.creases.clear();
   tags.corners.clear();
   tags.holes.clear();
   tags.other.clear();
   return tags;
+}
+
+// The crease method refinement uses on this level.
+CreaseMethod crease_method_of(const PolygonMesh& level, const RefineOptions& options) {
+  return options.crease_method.value_or(level.tags.crease_method);
+}
+
+// The tags of the level `counts.size()` quad splits below `level`: its
+// options, and its crease, corner and hole tags carried down as
+// split_topology() carries them one level at a time with uniform creasing
+// (each crease's halves at the ends' vertex points, each numbered by index
+// arithmetic; a hole's faces in a row).
+Tags last_level_tags(const PolygonMesh& level, const MeshTopology& t, std::span<const LevelCounts> counts) {
+  Tags out = tag_options(level.tags);
+  struct Crease {
+    Index v0, v1, edge;
+    double sharpness;
+  };
+  std::vector<Crease> creases;
+  for (const CreaseTag& c : level.tags.creases) {
+    const bool valid = c.v0 >= 0 && c.v1 >= 0 && c.v0 < t.vertex_count() && c.v1 < t.vertex_count();
+    const Index e = valid ? t.find_edge(c.v0, c.v1) : kInvalidIndex;
+    if (e != kInvalidIndex) creases.push_back({c.v0, c.v1, e, c.sharpness});
+  }
+  std::vector<CornerTag> corners;
+  for (const CornerTag& c : level.tags.corners)
+    if (c.vertex >= 0 && c.vertex < t.vertex_count()) corners.push_back(c);
+  for (const LevelCounts& at : counts) {
+    const auto edge_point = static_cast<Index>(at.faces), vertex_point = static_cast<Index>(at.faces + at.edges);
+    const auto halves = static_cast<Index>(4 * at.faces);
+    std::vector<Crease> next;
+    for (const Crease& c : creases) {
+      const double s = subdivide_sharpness(c.sharpness);
+      if (s <= 0.0) continue;
+      const Index e = edge_point + c.edge;
+      next.push_back({vertex_point + c.v0, e, halves + 2 * c.edge + (c.v0 < c.v1 ? 0 : 1), s});
+      next.push_back({e, vertex_point + c.v1, halves + 2 * c.edge + (c.v1 < c.v0 ? 0 : 1), s});
+    }
+    creases.swap(next);
+    std::erase_if(corners, [&](CornerTag& c) {
+      c.sharpness = subdivide_sharpness(c.sharpness);
+      c.vertex += vertex_point;
+      return c.sharpness <= 0.0;
+    });
+  }
+  for (const Crease& c : creases) out.creases.push_back({c.v0, c.v1, c.sharpness});
+  out.corners = std::move(corners);
+  std::vector<Index> holes = level.tags.holes;
+  std::sort(holes.begin(), holes.end());
+  holes.erase(std::unique(holes.begin(), holes.end()), holes.end());
+  std::int64_t per_face = 1;
+  for (std::size_t l = 0; l < counts.size(); ++l) per_face *= 4;
+  for (const Index f : holes)
+    if (f >= 0 && f < t.face_count())
+      for (std::int64_t i = 0; i < per_face; ++i) out.holes.push_back(static_cast<Index>(f * per_face + i));
+  return out;
+}
+
+// Per vertex: whether a crease or corner tag makes it sharp (the rules at
+// it, and at the edges leaving it, are not the regular ones).
+std::vector<char> sharp_vertices(const PolygonMesh& level, const MeshTopology& t) {
+  std::vector<char> sharp(static_cast<std::size_t>(t.vertex_count()));
+  auto valid = [&](Index v) { return v >= 0 && v < t.vertex_count(); };
+  for (const CreaseTag& c : level.tags.creases)
+    if (c.sharpness > 0.0 && valid(c.v0) && valid(c.v1) && t.find_edge(c.v0, c.v1) != kInvalidIndex)
+      sharp[static_cast<std::size_t>(c.v0)] = sharp[static_cast<std::size_t>(c.v1)] = 1;
+  for (const CornerTag& c : level.tags.corners)
+    if (c.sharpness > 0.0 && valid(c.vertex)) sharp[static_cast<std::size_t>(c.vertex)] = 1;
+  return sharp;
 }
 
 // Whether the grid path covers these levels (grid_refine.h), before looking
@@ -93,7 +161,10 @@ bool covers(const PolygonMesh& level, const MeshTopology& t, const Scheme& schem
   for (const VertexChannel& c : level.vertex_channels)
     if (c.components <= 0 || c.values.size() != level.positions.size() * static_cast<std::size_t>(c.components))
       return false;
-  if (!level.tags.creases.empty() || !level.tags.corners.empty() || !level.tags.holes.empty()) return false;
+  // Chaikin's creasing reads a semi-sharp edge's neighbours: the masks.
+  if (crease_method_of(level, options) == CreaseMethod::chaikin)
+    for (const CreaseTag& c : level.tags.creases)
+      if (c.sharpness > 0.0 && c.sharpness < kInfiniteSharpness) return false;
   for (Index f = 0; f < t.face_count(); ++f)
     if (t.face_size(f) != 4) return false;
   for (Index v = 0; v < t.vertex_count(); ++v)
@@ -104,7 +175,9 @@ bool covers(const PolygonMesh& level, const MeshTopology& t, const Scheme& schem
 // The faces that are not regular patches and those sharing a vertex with
 // them, as a mesh of their own for the masks (its artificial boundary
 // changes only points outside the faces taken from it), with the number
-// each face has there (kInvalidIndex for faces not in it).
+// each face has there (kInvalidIndex for faces not in it). Where the level
+// has tags, a second ring: the sharpness and rules of the first ring's edges
+// and vertices then see all their neighbours.
 struct MasksMesh {
   PolygonMesh mesh;
   std::vector<Index> face_in_mesh;
@@ -118,16 +191,27 @@ std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology
   for (Index f = 0; f < nf; ++f)
     if (!regular[static_cast<std::size_t>(f)])
       for (const Index v : t.face_vertices(f)) near[static_cast<std::size_t>(v)] = 1;
+  auto touches = [&](Index f) {
+    const auto vertices = t.face_vertices(f);
+    return std::any_of(vertices.begin(), vertices.end(), [&](Index v) { return near[static_cast<std::size_t>(v)] != 0; });
+  };
+  const Tags& tags = level.tags;
+  if (!tags.creases.empty() || !tags.corners.empty() || !tags.holes.empty()) {
+    std::vector<char> ring(static_cast<std::size_t>(nf));
+    for (Index f = 0; f < nf; ++f) ring[static_cast<std::size_t>(f)] = touches(f);
+    for (Index f = 0; f < nf; ++f)
+      if (ring[static_cast<std::size_t>(f)])
+        for (const Index v : t.face_vertices(f)) near[static_cast<std::size_t>(v)] = 1;
+  }
   MasksMesh local;
   local.face_in_mesh.assign(static_cast<std::size_t>(nf), kInvalidIndex);
   std::vector<Index> vertex_in_mesh(static_cast<std::size_t>(t.vertex_count()), kInvalidIndex);
   PolygonMesh& mesh = local.mesh;
-  mesh.tags = child_tags(level.tags);
+  mesh.tags = tag_options(tags);
   for (const VertexChannel& c : level.vertex_channels) mesh.vertex_channels.push_back({c.name, c.components, {}});
   for (Index f = 0; f < nf; ++f) {
     const auto vertices = t.face_vertices(f);
-    if (std::none_of(vertices.begin(), vertices.end(), [&](Index v) { return near[static_cast<std::size_t>(v)] != 0; }))
-      continue;
+    if (!touches(f)) continue;
     if (2 * (mesh.face_count() + 1) > nf) return std::nullopt;
     std::array<Index, 4> face;
     for (std::size_t c = 0; c < 4; ++c) {
@@ -147,15 +231,31 @@ std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology
     }
     local.face_in_mesh[static_cast<std::size_t>(f)] = mesh.add_face(face);
   }
+  // The tags on its elements.
+  auto in_mesh = [&](Index v) {
+    return v >= 0 && v < t.vertex_count() ? vertex_in_mesh[static_cast<std::size_t>(v)] : kInvalidIndex;
+  };
+  for (const CreaseTag& c : tags.creases)
+    if (in_mesh(c.v0) != kInvalidIndex && in_mesh(c.v1) != kInvalidIndex)
+      mesh.tags.creases.push_back({in_mesh(c.v0), in_mesh(c.v1), c.sharpness});
+  for (const CornerTag& c : tags.corners)
+    if (in_mesh(c.vertex) != kInvalidIndex) {
+      mesh.tags.corners.push_back(c);
+      mesh.tags.corners.back().vertex = in_mesh(c.vertex);
+    }
+  for (const Index f : tags.holes)
+    if (f >= 0 && f < nf && local.face_in_mesh[static_cast<std::size_t>(f)] != kInvalidIndex)
+      mesh.tags.holes.push_back(local.face_in_mesh[static_cast<std::size_t>(f)]);
   return local;
 }
 
-// The result's arrays, sized, and its tags: the level's options, with the
+// The result's arrays, sized, and its tags (last_level_tags), with the
 // crease method refinement used (as the masks' levels name it).
-PolygonMesh sized_result(const PolygonMesh& level, const RefineOptions& options, const LevelCounts& counts) {
+PolygonMesh sized_result(const PolygonMesh& level, const MeshTopology& t, const RefineOptions& options,
+                         std::span<const LevelCounts> before, const LevelCounts& counts) {
   PolygonMesh out;
-  out.tags = child_tags(level.tags);
-  const CreaseMethod method = options.crease_method.value_or(level.tags.crease_method);
+  out.tags = last_level_tags(level, t, before);
+  const CreaseMethod method = crease_method_of(level, options);
   if (out.tags.crease_method != method) {
     out.tags.crease_method = method;
     out.tags.crease_method_set = true;
@@ -200,11 +300,17 @@ std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology&
   if (4 * plan.last.faces > kMax || plan.last.vertices > kMax) return std::nullopt;
   plan.per_face = static_cast<Index>(plan.last.faces / nf);
 
+  // Regular: a bicubic patch with no sharp corner.
+  const std::vector<char> sharp = sharp_vertices(level, t);
   plan.regular.resize(static_cast<std::size_t>(nf));
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     std::array<Index, 16> patch;
-    for (Index f = range.begin(); f != range.end(); ++f)
-      plan.regular[static_cast<std::size_t>(f)] = gather_patch(t, f, patch);
+    for (Index f = range.begin(); f != range.end(); ++f) {
+      const auto corners = t.face_vertices(f);
+      plan.regular[static_cast<std::size_t>(f)] =
+          gather_patch(t, f, patch) &&
+          std::none_of(corners.begin(), corners.end(), [&](Index v) { return sharp[static_cast<std::size_t>(v)] != 0; });
+    }
   });
   std::optional<MasksMesh> local = masks_mesh(level, t, plan.regular);
   if (!local) return std::nullopt;  // mostly irregular: the masks first
@@ -257,7 +363,7 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
   PolygonMesh local_refined;
   if (plan->local.mesh.face_count() > 0) local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
 
-  PolygonMesh out = sized_result(level, options, plan->last);
+  PolygonMesh out = sized_result(level, t, options, plan->counts, plan->last);
   const RegularGrid& rule = *scheme.fast_path.regular_grid;
   const PointValues values(level);
   const int width = values.width, n = plan->n, side = n + 3;

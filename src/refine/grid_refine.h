@@ -3,17 +3,18 @@
 // that declares its regular rule (FastPath::regular_grid), made in one go.
 //
 // Each face of the starting level (all quads) refines on its own. A face
-// whose corners are interior vertices of valence 4 is a regular patch: its
-// 4 x 4 control points are gathered once and refined as a grid by the
-// declared tensor stencil, without any intermediate topology. The other
-// faces (extraordinary corners, boundaries) are refined by the masks on a
-// small mesh: those faces and the faces sharing a vertex with them, which
-// is everything their points read when no edge is tagged sharp. Vertex
-// numbers and faces of the result are computed by index arithmetic, so the
-// result is the masks' mesh (the same numbering, positions equal up to
-// rounding; vertex channels alike): one output array per level, written
-// once. Each shared point is
-// written by one owning face, so results do not depend on the thread count.
+// whose corners are interior vertices of valence 4 with no sharp edge or
+// corner tag is a regular patch: its 4 x 4 control points are gathered once
+// and refined as a grid by the declared tensor stencil, without any
+// intermediate topology. The other faces (extraordinary or sharp corners,
+// boundaries) are refined by the masks on a small mesh: those faces and the
+// faces sharing a vertex with them, which is everything their points read
+// (a second ring where tags are present, for the rules at the first ring's
+// vertices). Vertex numbers, faces and tags of the result are computed by
+// index arithmetic, so the result is the masks' mesh (the same numbering and
+// tags; positions and vertex channels equal up to rounding), written once
+// into its final arrays. Each shared point is written by one owning face,
+// so results do not depend on the thread count.
 
 #include <optional>
 
@@ -29,10 +30,10 @@ namespace subdiv::detail {
 /// mesh's face arrays may have been dropped) through the grid path, or
 /// nullopt where it does not apply: a scheme without a regular grid rule,
 /// piecewise-smooth rules or non-manifold refinement, a face that is not a
-/// quad, a sharp tag (crease, corner) or hole, face-varying channels, more
-/// than 8 levels; or where the mesh refined by the masks
-/// would hold more than half the faces (the caller then refines one level by
-/// the masks and asks again).
+/// quad, an isolated vertex, semi-sharp creases with Chaikin's creasing,
+/// face-varying channels, more than 8 levels; or where the mesh refined by
+/// the masks would hold more than half the faces (the caller then refines
+/// one level by the masks and asks again).
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& topology,
                                            const Scheme& scheme, const RefineOptions& options, int levels);
 

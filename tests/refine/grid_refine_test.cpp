@@ -204,6 +204,31 @@ TEST(GridRefine, EqualsTheMasksOnCodeBuiltMeshes) {
   EXPECT_TRUE(takes_grids(test::quad_grid(24, 20), catmull_clark_scheme(), 3));
 }
 
+// A torus with every kind of tag: a loop of semi-sharp edges, an infinitely
+// sharp edge, corner tags (semi-sharp and infinite) and holes, one listed
+// twice.
+PolygonMesh tagged_torus() {
+  const Index n = 32;
+  PolygonMesh mesh = torus(n);
+  for (Index i = 0; i < n; ++i) mesh.tags.creases.push_back({i, (i + 1) % n, 1.5});
+  mesh.tags.creases.push_back({n * 8 + 3, n * 9 + 3, kInfiniteSharpness});
+  mesh.tags.corners.push_back({.vertex = n * 4 + 9, .sharpness = 2.5, .type = CornerType::unspecified, .angle = {}});
+  mesh.tags.corners.push_back(
+      {.vertex = n * 20 + 2, .sharpness = kInfiniteSharpness, .type = CornerType::unspecified, .angle = {}});
+  mesh.tags.holes = {700, 37, 700};
+  return mesh;
+}
+
+TEST(GridRefine, EqualsTheMasksWithTags) {
+  const PolygonMesh mesh = tagged_torus();
+  EXPECT_TRUE(takes_grids(mesh, catmull_clark_scheme(), 3));
+  for (int levels = 1; levels <= 4; ++levels) {
+    expect_grids_equal_masks(mesh, catmull_clark_scheme(), levels, "tagged torus, " + std::to_string(levels) + " levels");
+    expect_grid_stencils_equal_masks(mesh, catmull_clark_scheme(), levels,
+                                     "tagged torus, " + std::to_string(levels) + " levels");
+  }
+}
+
 TEST(GridRefine, EqualsTheMasksOnRealMeshes) {
   std::vector<fs::path> files;
   for (const char* name : {"cube.obj", "l_shape.obj", "spot_control_mesh.obj", "elephant.obj"})
@@ -272,8 +297,10 @@ TEST(GridRefine, DeclinesWhatItDoesNotCover) {
   const PolygonMesh plain = torus(6);
   EXPECT_TRUE(takes_grids(plain, catmull_clark_scheme(), 2));
 
-  PolygonMesh creased = plain;
+  PolygonMesh creased = torus(20);  // a semi-sharp edge: its faces by the masks, the rest as grids
   creased.tags.creases.push_back({0, 1, 2.0});
+  EXPECT_TRUE(takes_grids(creased, catmull_clark_scheme(), 2));
+  creased.tags.crease_method = CreaseMethod::chaikin;  // whose creasing reads the edge's neighbours
   EXPECT_FALSE(takes_grids(creased, catmull_clark_scheme(), 2));
 
   EXPECT_TRUE(takes_grids(with_channels(plain), catmull_clark_scheme(), 2));

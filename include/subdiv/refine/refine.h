@@ -75,8 +75,8 @@ struct RefineOptions : RuleOptions {
   int threads = 0;
   /// Refine the regular faces of schemes that declare a grid rule
   /// (FastPath::regular_grid: Catmull-Clark, bilinear) as grids, the
-  /// remaining levels at once, where the level has only quads and no sharp
-  /// tags or face-varying channels (refine() and refine_stencil_table()). The
+  /// remaining levels at once, where the level has only quads and no
+  /// face-varying channels (refine() and refine_stencil_table()). The
   /// result is the same mesh, numbering included, with positions, vertex
   /// channels and stencil weights equal up to rounding; false: the masks
   /// everywhere, level by level.
