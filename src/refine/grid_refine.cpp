@@ -157,7 +157,13 @@ bool covers(const PolygonMesh& level, const MeshTopology& t, const Scheme& schem
       levels > kMaxGridLevels)
     return false;
   if (options.boundary_rules != BoundaryRules::standard || options.allow_non_manifold) return false;
-  if (!level.face_varying_channels.empty()) return false;
+  for (const FaceVaryingChannel& c : level.face_varying_channels) {
+    if (c.components <= 0 || c.values.size() % static_cast<std::size_t>(c.components) != 0 ||
+        c.indices.size() != static_cast<std::size_t>(t.corner_count()))
+      return false;
+    for (const Index i : c.indices)
+      if (i < 0 || i >= c.value_count()) return false;
+  }
   for (const VertexChannel& c : level.vertex_channels)
     if (c.components <= 0 || c.values.size() != level.positions.size() * static_cast<std::size_t>(c.components))
       return false;
@@ -272,6 +278,50 @@ PolygonMesh sized_result(const PolygonMesh& level, const MeshTopology& t, const 
 }
 
 
+// Face-varying channels follow the quad split linearly within each face
+// (quad_split_face_varying()): a face's new values are the midpoints of its
+// edges and its centroid, made with the same arithmetic in the same order,
+// numbered [the level's values | one per corner | one per face]. Each new
+// value belongs to one face, so faces fill theirs independently.
+struct FaceVaryingLevels {
+  std::span<const LevelCounts> counts;  // of the levels before the last
+  std::vector<Index> values;            // the value count of each level
+};
+
+FaceVaryingLevels face_varying_levels(const FaceVaryingChannel& channel, std::span<const LevelCounts> counts) {
+  FaceVaryingLevels levels{counts, {channel.value_count()}};
+  for (const LevelCounts& at : counts) levels.values.push_back(levels.values.back() + static_cast<Index>(5 * at.faces));
+  return levels;
+}
+
+// The values and last-level indices of face `face` of the level at `depth`,
+// whose corners hold values `ids`, and of its descendants.
+void split_face_varying(const FaceVaryingLevels& levels, Index face, const std::array<Index, 4>& ids,
+                        std::size_t depth, FaceVaryingChannel& out) {
+  if (depth == levels.counts.size()) {
+    std::copy(ids.begin(), ids.end(), out.indices.begin() + 4 * static_cast<std::ptrdiff_t>(face));
+    return;
+  }
+  const auto k = static_cast<std::size_t>(out.components);
+  const Index first = levels.values[depth], corners = static_cast<Index>(4 * levels.counts[depth].faces);
+  auto value = [&](Index i) { return out.values.data() + static_cast<std::size_t>(i) * k; };
+  const Index centroid = first + corners + face;
+  double* m = value(centroid);
+  std::fill(m, m + k, 0.0);
+  for (int c = 0; c < 4; ++c) {
+    const double* a = value(ids[static_cast<std::size_t>(c)]);
+    const double* b = value(ids[static_cast<std::size_t>((c + 1) % 4)]);
+    double* mid = value(first + 4 * face + c);
+    for (std::size_t j = 0; j < k; ++j) mid[j] = 0.5 * (a[j] + b[j]);
+    for (std::size_t j = 0; j < k; ++j) m[j] += a[j] / 4;
+  }
+  for (Index c = 0; c < 4; ++c) {
+    const std::array<Index, 4> child{ids[static_cast<std::size_t>(c)], first + 4 * face + c, centroid,
+                                     first + 4 * face + (c + 3) % 4};
+    split_face_varying(levels, 4 * face + c, child, depth + 1, out);
+  }
+}
+
 // What the positions and the stencils of the grid path share: the levels'
 // counts, which faces are regular, and the masks' mesh of the others.
 struct GridPlan {
@@ -364,6 +414,18 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
   if (plan->local.mesh.face_count() > 0) local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
 
   PolygonMesh out = sized_result(level, t, options, plan->counts, plan->last);
+  std::vector<FaceVaryingLevels> face_varying;
+  for (std::size_t ch = 0; ch < level.face_varying_channels.size(); ++ch) {
+    const FaceVaryingChannel& in = level.face_varying_channels[ch];
+    face_varying.push_back(face_varying_levels(in, plan->counts));
+    FaceVaryingChannel& channel = out.face_varying_channels.emplace_back();
+    channel.name = in.name;
+    channel.components = in.components;
+    assign_large(channel.values, static_cast<std::size_t>(face_varying.back().values.back()) *
+                                     static_cast<std::size_t>(in.components));
+    std::copy(in.values.begin(), in.values.end(), channel.values.begin());
+    assign_large(channel.indices, 4 * static_cast<std::size_t>(plan->last.faces));
+  }
   const RegularGrid& rule = *scheme.fast_path.regular_grid;
   const PointValues values(level);
   const int width = values.width, n = plan->n, side = n + 3;
@@ -378,6 +440,11 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
         out.face_offsets[static_cast<std::size_t>(sub.face)] = sub.face * 4;
         std::copy(sub.vertex.begin(), sub.vertex.end(), out.face_indices.begin() + static_cast<std::ptrdiff_t>(at));
       });
+      for (std::size_t ch = 0; ch < face_varying.size(); ++ch) {
+        const auto corners = level.face_varying_channels[ch].indices.begin() + 4 * static_cast<std::ptrdiff_t>(f);
+        split_face_varying(face_varying[ch], f, {corners[0], corners[1], corners[2], corners[3]}, 0,
+                           out.face_varying_channels[ch]);
+      }
       if (!plan->regular[static_cast<std::size_t>(f)]) {
         for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
           copy_point(local_refined, s.local_index[at], s.index[at], out);

@@ -11,10 +11,10 @@
 // faces sharing a vertex with them, which is everything their points read
 // (a second ring where tags are present, for the rules at the first ring's
 // vertices). Vertex numbers, faces and tags of the result are computed by
-// index arithmetic, so the result is the masks' mesh (the same numbering and
-// tags; positions and vertex channels equal up to rounding), written once
-// into its final arrays. Each shared point is written by one owning face,
-// so results do not depend on the thread count.
+// index arithmetic, so the result is the masks' mesh (the same numbering,
+// tags and face-varying values; positions and vertex channels equal up to
+// rounding), written once into its final arrays. Each shared point is
+// written by one owning face, so results do not depend on the thread count.
 
 #include <optional>
 
@@ -31,7 +31,7 @@ namespace subdiv::detail {
 /// nullopt where it does not apply: a scheme without a regular grid rule,
 /// piecewise-smooth rules or non-manifold refinement, a face that is not a
 /// quad, an isolated vertex, semi-sharp creases with Chaikin's creasing,
-/// face-varying channels, more than 8 levels; or where the mesh refined by
+/// malformed face-varying channels, more than 8 levels; or where the mesh refined by
 /// the masks would hold more than half the faces (the caller then refines
 /// one level by the masks and asks again).
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& topology,

@@ -2,9 +2,9 @@
 // definition, the masks: the declared grid rule is the masks' regular
 // stencil; refining with grids gives the masks' mesh (faces identical,
 // positions within 1e-14 of the mesh's size) and the masks' stencil tables
-// on code-built, bundled and shared meshes; results do not depend on the
-// thread count; and the path
-// declines what it does not cover. Vertex channels take the same path.
+// on code-built, bundled and shared meshes, tags, vertex and face-varying
+// channels included; results do not depend on the thread count; and the
+// path declines what it does not cover.
 
 #include <gtest/gtest.h>
 
@@ -82,6 +82,16 @@ void expect_grids_equal_masks(const PolygonMesh& mesh, const Scheme& scheme, int
     if (d > worst) worst = d, at = v;
   }
   EXPECT_LE(worst, tolerance) << what << ": vertex " << at;
+  // Face-varying values are midpoints and centroids made in the same order: identical.
+  EXPECT_EQ(grids.face_varying_channels.size(), masks.face_varying_channels.size()) << what;
+  for (std::size_t ch = 0; ch < grids.face_varying_channels.size() && ch < masks.face_varying_channels.size(); ++ch) {
+    const FaceVaryingChannel& a = grids.face_varying_channels[ch];
+    const FaceVaryingChannel& b = masks.face_varying_channels[ch];
+    EXPECT_EQ(a.name, b.name) << what;
+    EXPECT_EQ(a.components, b.components) << what;
+    EXPECT_EQ(a.indices, b.indices) << what << ": face-varying channel " << a.name;
+    EXPECT_TRUE(a.values == b.values) << what << ": face-varying channel " << a.name;
+  }
   ASSERT_EQ(grids.vertex_channels.size(), masks.vertex_channels.size()) << what;
   for (std::size_t ch = 0; ch < grids.vertex_channels.size(); ++ch) {
     const VertexChannel& a = grids.vertex_channels[ch];
@@ -110,6 +120,21 @@ void expect_grid_stencils_equal_masks(const PolygonMesh& mesh, const Scheme& sch
     const auto gw = grids.row_weights(r), mw = masks.row_weights(r);
     for (std::size_t j = 0; j < gw.size(); ++j) ASSERT_NEAR(gw[j], mw[j], kRelativeTolerance) << what << ": row " << r;
   }
+}
+
+// The mesh with a face-varying channel of two components whose values are
+// shared within rows of faces and split between them (seams).
+PolygonMesh with_face_varying(PolygonMesh mesh) {
+  FaceVaryingChannel uv{"uv", 2, {}, {}};
+  for (Index f = 0; f < mesh.face_count(); ++f)
+    for (Index c = 0; c < mesh.face_size(f); ++c) {
+      const Vec3& p = mesh.positions[static_cast<std::size_t>(mesh.face(f)[static_cast<std::size_t>(c)])];
+      uv.indices.push_back(static_cast<Index>(uv.values.size() / 2));
+      uv.values.push_back(p.x / 3.0 + (f % 3 == 0 ? 0.5 : 0.0));
+      uv.values.push_back(p.y * p.z);
+    }
+  mesh.face_varying_channels = {uv};
+  return mesh;
 }
 
 // The mesh with two vertex channels, of one value and of three.
@@ -196,6 +221,7 @@ TEST(GridRefine, EqualsTheMasksOnCodeBuiltMeshes) {
                                  "open grid with vertex channels, " + what);
       }
       expect_grids_equal_masks(with_channels(torus(5)), *scheme, levels, "torus with vertex channels, " + what);
+      expect_grids_equal_masks(with_face_varying(torus(6)), *scheme, levels, "torus with face-varying values, " + what);
     }
   }
   // The comparisons above covered both routes of the path: all-grid faces
@@ -247,7 +273,6 @@ TEST(GridRefine, EqualsTheMasksOnRealMeshes) {
       continue;  // the deliberately broken shapes
     }
     mesh.tags.boundary_interpolation = BoundaryInterpolation::edge_and_corner;
-    mesh.face_varying_channels.clear();  // split by the masks' levels: the grid path declines them
     if (!test::rejection(mesh, catmull_clark_scheme(), with_grids(true, 1)).empty()) continue;
     for (int levels = 1; levels <= 3; ++levels)
       expect_grids_equal_masks(mesh, catmull_clark_scheme(), levels, file.filename().string());
@@ -304,10 +329,12 @@ TEST(GridRefine, DeclinesWhatItDoesNotCover) {
   EXPECT_FALSE(takes_grids(creased, catmull_clark_scheme(), 2));
 
   EXPECT_TRUE(takes_grids(with_channels(plain), catmull_clark_scheme(), 2));
-  PolygonMesh face_varying = plain;  // face-varying channels split by the masks' levels
+  PolygonMesh face_varying = plain;  // a face-varying channel, then one naming a value it does not have
   face_varying.face_varying_channels.push_back(
       {"uv", 1, std::vector<double>(plain.face_indices.size(), 0.5), std::vector<Index>(plain.face_indices.size())});
   for (std::size_t i = 0; i < plain.face_indices.size(); ++i) face_varying.face_varying_channels[0].indices[i] = static_cast<Index>(i);
+  EXPECT_TRUE(takes_grids(face_varying, catmull_clark_scheme(), 2));
+  face_varying.face_varying_channels[0].indices[5] = static_cast<Index>(plain.face_indices.size());
   EXPECT_FALSE(takes_grids(face_varying, catmull_clark_scheme(), 2));
 
   PolygonMesh with_triangle = plain;

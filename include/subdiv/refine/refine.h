@@ -75,11 +75,11 @@ struct RefineOptions : RuleOptions {
   int threads = 0;
   /// Refine the regular faces of schemes that declare a grid rule
   /// (FastPath::regular_grid: Catmull-Clark, bilinear) as grids, the
-  /// remaining levels at once, where the level has only quads and no
-  /// face-varying channels (refine() and refine_stencil_table()). The
-  /// result is the same mesh, numbering included, with positions, vertex
-  /// channels and stencil weights equal up to rounding; false: the masks
-  /// everywhere, level by level.
+  /// remaining levels at once, where the level has only quads (refine() and
+  /// refine_stencil_table(); docs/refinement.md says where it declines). The
+  /// result is the same mesh, numbering, tags and face-varying values
+  /// included, with positions, vertex channels and stencil weights equal up
+  /// to rounding; false: the masks everywhere, level by level.
   bool regular_grids = true;
   /// Called after each level with its number counted from this call
   /// (1-based) and the level's mesh.
