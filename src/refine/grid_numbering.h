@@ -46,7 +46,7 @@ struct SubFace {
 // edges (face point, edge point), 4 per face in the order of their parent
 // edges' numbers | the halves of each parent edge, the one at its smaller
 // vertex first].
-// Without `edges`, the children's edges are left unset (the last level's
+// Without `edges`, the children's edges are kInvalidIndex (the last level's
 // faces need none).
 template <bool edges>
 inline void split_sub_face(const SubFace& s, const LevelCounts& level, std::array<SubFace, 4>& children) {

@@ -115,11 +115,11 @@ Tags last_level_tags(const PolygonMesh& level, const MeshTopology& t, std::span<
       next.push_back({e, vertex_point + c.v1, halves + 2 * c.edge + (c.v1 < c.v0 ? 0 : 1), s});
     }
     creases.swap(next);
-    std::erase_if(corners, [&](CornerTag& c) {
+    for (CornerTag& c : corners) {
       c.sharpness = subdivide_sharpness(c.sharpness);
       c.vertex += vertex_point;
-      return c.sharpness <= 0.0;
-    });
+    }
+    std::erase_if(corners, [](const CornerTag& c) { return c.sharpness <= 0.0; });
   }
   for (const Crease& c : creases) out.creases.push_back({c.v0, c.v1, c.sharpness});
   out.corners = std::move(corners);
@@ -276,7 +276,6 @@ PolygonMesh sized_result(const PolygonMesh& level, const MeshTopology& t, const 
   }
   return out;
 }
-
 
 // Face-varying channels follow the quad split linearly within each face
 // (quad_split_face_varying()): a face's new values are the midpoints of its
