@@ -331,8 +331,11 @@ struct GridPlan {
   std::vector<LevelCounts> counts = {};  // of the levels before the last
   LevelCounts last = {};
   std::vector<char> regular = {};
+  std::vector<Index> patches = {};  // 16 control points per face, those of regular faces set
   MasksMesh local = {};
   RefineOptions by_masks = {};  // for the masks' mesh
+
+  const Index* patch(Index f) const { return patches.data() + 16 * static_cast<std::size_t>(f); }
 };
 
 std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
@@ -352,13 +355,16 @@ std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology&
   // Regular: a bicubic patch with no sharp corner.
   const std::vector<char> sharp = sharp_vertices(level, t);
   plan.regular.resize(static_cast<std::size_t>(nf));
+  assign_large(plan.patches, 16 * static_cast<std::size_t>(nf));
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
     std::array<Index, 16> patch;
     for (Index f = range.begin(); f != range.end(); ++f) {
       const auto corners = t.face_vertices(f);
-      plan.regular[static_cast<std::size_t>(f)] =
+      const bool regular =
           gather_patch(t, f, patch) &&
           std::none_of(corners.begin(), corners.end(), [&](Index v) { return sharp[static_cast<std::size_t>(v)] != 0; });
+      plan.regular[static_cast<std::size_t>(f)] = regular;
+      if (regular) std::copy(patch.begin(), patch.end(), plan.patches.begin() + 16 * static_cast<std::ptrdiff_t>(f));
     }
   });
   std::optional<MasksMesh> local = masks_mesh(level, t, plan.regular);
@@ -432,7 +438,6 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
   tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
     Scratch& s = scratch.local();
     s.size_for(n, width);
-    std::array<Index, 16> patch;
     for (Index f = range.begin(); f != range.end(); ++f) {
       walk_face(*plan, f, local_refined.face_indices, s, [&](const SubFace& sub) {
         const auto at = static_cast<std::size_t>(sub.face) * 4;
@@ -450,7 +455,7 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
         });
         continue;
       }
-      gather_patch(t, f, patch);
+      const Index* patch = plan->patch(f);
       for (std::size_t i = 0; i < 16; ++i) values.gather(patch[i], s.grid.data() + i * static_cast<std::size_t>(width));
       if (width == 3) refine_patch<3>(rule, levels, width, s);
       else refine_patch<0>(rule, levels, width, s);
@@ -515,8 +520,7 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
   assign_large(row_weights, static_cast<std::size_t>(offsets.back()));
   for_each_face([&](Index f, const Scratch& s) {
     const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
-    std::array<Index, 16> patch;
-    if (grid) gather_patch(t, f, patch);
+    const Index* patch = plan->patch(f);
     std::array<std::pair<Index, double>, 16> entries;
     for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
       std::size_t count = 0;
