@@ -356,9 +356,9 @@ struct FastPath {
   /// face-varying channel; its child numbers the vertices [face points |
   /// edge points | vertex points] as every quad split does. nullptr: none.
   const Scheme* two_steps = nullptr;
-  /// The regular rule as a grid stencil (RegularGrid): refine() then refines
-  /// the faces whose one-ring is regular as grids (refine/grid_refine.h).
-  /// nullptr: none.
+  /// The regular rule as a grid stencil (RegularGrid): refine() and
+  /// refine_stencil_table() then refine the faces whose corners are regular
+  /// as grids (src/refine/grid_refine.h). nullptr: none.
   const RegularGrid* regular_grid = nullptr;
 };
 
