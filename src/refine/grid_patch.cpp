@@ -58,7 +58,6 @@ Ownership ownership_of(const MeshTopology& t, Index f, int n) {
   return o;
 }
 
-
 std::vector<std::array<double, 4>> line_weights(const RegularGrid& rule, int levels) {
   const int n = 1 << levels;
   std::vector<std::array<double, 4>> weights(static_cast<std::size_t>(n + 1));
