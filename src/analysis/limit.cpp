@@ -628,8 +628,8 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   PolygonMesh current = std::move(hierarchy.levels.back().mesh);
 
   const MeshTopology t(current);
-  const BoundaryInterpolation boundary = options.refine.boundary.value_or(current.tags.boundary_interpolation);
-  const CreaseMethod method = options.refine.crease_method.value_or(current.tags.crease_method);
+  const BoundaryInterpolation boundary = boundary_of(current, options.refine);
+  const CreaseMethod method = crease_method_of(current, options.refine);
   const LevelCreasing creasing = compute_creasing(current, t, boundary, method);
   std::vector<char> semi_sharp_vertex(static_cast<std::size_t>(current.vertex_count()), 0);
   for (const CornerTag& c : current.tags.corners)

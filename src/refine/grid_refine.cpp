@@ -78,11 +78,6 @@ Tags tag_options(const Tags& parent) {
   return tags;
 }
 
-// The crease method refinement uses on this level.
-CreaseMethod crease_method_of(const PolygonMesh& level, const RefineOptions& options) {
-  return options.crease_method.value_or(level.tags.crease_method);
-}
-
 // The tags of the level `counts.size()` quad splits below `level`: its
 // options, and its crease, corner and hole tags carried down as
 // split_topology() carries them one level at a time with uniform creasing
@@ -479,14 +474,15 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
     local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
     local_table = refine_stencil_table(plan->local.mesh, scheme, plan->by_masks);
   }
+  // A regular point's row: fn(control point 4j + i, weight) for each nonzero
+  // product of the line weights.
   const std::vector<std::array<double, 4>> weights = line_weights(*scheme.fast_path.regular_grid, levels);
-  auto row_size = [&](int x, int y) {
-    Index size = 0;
-    for (int j = 0; j < 4; ++j)
-      for (int i = 0; i < 4; ++i)
-        size += weights[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] *
-                    weights[static_cast<std::size_t>(y)][static_cast<std::size_t>(j)] != 0.0;
-    return size;
+  auto for_each_regular_entry = [&](int x, int y, auto&& fn) {
+    for (std::size_t j = 0; j < 4; ++j)
+      for (std::size_t i = 0; i < 4; ++i) {
+        const double w = weights[static_cast<std::size_t>(x)][i] * weights[static_cast<std::size_t>(y)][j];
+        if (w != 0.0) fn(4 * j + i, w);
+      }
   };
 
   // Each vertex's row size, from its owning face; then the rows in place.
@@ -507,8 +503,10 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
   for_each_face([&](Index f, const Scratch& s) {
     const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
     for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
-      offsets[static_cast<std::size_t>(s.index[at]) + 1] =
-          grid ? row_size(x, y) : static_cast<Index>(local_table.row_vertices(s.local_index[at]).size());
+      Index size = 0;
+      if (grid) for_each_regular_entry(x, y, [&](std::size_t, double) { ++size; });
+      else size = static_cast<Index>(local_table.row_vertices(s.local_index[at]).size());
+      offsets[static_cast<std::size_t>(s.index[at]) + 1] = size;
     });
   });
   std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
@@ -524,14 +522,7 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
     std::array<std::pair<Index, double>, 16> entries;
     for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
       std::size_t count = 0;
-      if (grid) {
-        for (int j = 0; j < 4; ++j)
-          for (int i = 0; i < 4; ++i) {
-            const double w = weights[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] *
-                             weights[static_cast<std::size_t>(y)][static_cast<std::size_t>(j)];
-            if (w != 0.0) entries[count++] = {patch[static_cast<std::size_t>(4 * j + i)], w};
-          }
-      }
+      if (grid) for_each_regular_entry(x, y, [&](std::size_t k, double w) { entries[count++] = {patch[k], w}; });
       const auto vs = grid ? std::span<const Index>() : local_table.row_vertices(s.local_index[at]);
       const auto ws = grid ? std::span<const double>() : local_table.row_weights(s.local_index[at]);
       std::vector<std::pair<Index, double>> mapped;  // a masks' row over the level's vertices

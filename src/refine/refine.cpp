@@ -21,15 +21,15 @@
 
 namespace subdiv {
 
-namespace {
-
-BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RefineOptions& options) {
+BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RuleOptions& options) {
   return options.boundary.value_or(mesh.tags.boundary_interpolation);
 }
 
-CreaseMethod crease_method_of(const PolygonMesh& mesh, const RefineOptions& options) {
+CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& options) {
   return options.crease_method.value_or(mesh.tags.crease_method);
 }
+
+namespace {
 
 // What the masks of one level see: the parent and its creasing. The parent
 // mesh supplies positions, channels and tags; once its topology is derived
@@ -404,6 +404,19 @@ StencilTable record_stencils(const ParentLevel& view, const Scheme& scheme, cons
   return table;
 }
 
+// refine_levels()'s step for the fast path: each level's positions and
+// vertex channels straight from the masks, then the flatness modification.
+auto fast_step(BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options) {
+  return [boundary, method, &options](const PolygonMesh& parent, const MeshTopology& topology, int l,
+                                      const Scheme& level_scheme) {
+    return refine_level(parent, topology, l, level_scheme, boundary, method, options,
+                        [](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level, bool) {
+                          evaluate_fast(source, step, view, level);
+                          detail::apply_flatness(level.flatness, level.child);
+                        });
+  };
+}
+
 template <typename Body>
 void run_with_threads(int threads, Body&& body) {
   if (threads > 0) {
@@ -538,17 +551,8 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
       return by_grids.has_value();
     };
   run_with_threads(options.threads, [&] {
-    result = refine_levels(
-        mesh, std::move(coarse), scheme, options,
-        [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
-          return refine_level(parent, topology, l, level_scheme, boundary, method, options,
-                              [&](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level,
-                                  bool) {
-                                evaluate_fast(source, step, view, level);
-                                detail::apply_flatness(level.flatness, level.child);
-                              });
-        },
-        nullptr, false, as_grids);
+    result = refine_levels(mesh, std::move(coarse), scheme, options, fast_step(boundary, method, options), nullptr,
+                           false, as_grids);
   });
   if (by_grids) {
     result = std::move(*by_grids);
@@ -572,17 +576,8 @@ Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const 
   };
   PolygonMesh finest;
   run_with_threads(options.threads, [&] {
-    finest = refine_levels(
-        mesh, std::move(coarse), scheme, options,
-        [&](const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& level_scheme) {
-          return refine_level(parent, topology, l, level_scheme, boundary, method, options,
-                              [&](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level,
-                                  bool) {
-                                evaluate_fast(source, step, view, level);
-                                detail::apply_flatness(level.flatness, level.child);
-                              });
-        },
-        on_child, keep == KeepLevels::all);
+    finest = refine_levels(mesh, std::move(coarse), scheme, options, fast_step(boundary, method, options), on_child,
+                           keep == KeepLevels::all);
   });
   if (keep == KeepLevels::last) h.levels.push_back({std::move(finest), last, std::move(last_map)});
   return h;

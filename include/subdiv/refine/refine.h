@@ -61,6 +61,13 @@ struct RuleOptions {
   std::optional<CreaseMethod> crease_method;
 };
 
+/// The boundary interpolation refinement uses on `mesh`: the option's
+/// override, else the mesh's `interpolateboundary` tag.
+BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RuleOptions& options);
+/// The crease method refinement uses on `mesh`: the option's override, else
+/// the mesh's `creasemethod` tag.
+CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& options);
+
 /// A refinement: the rule choices, and the run controls below, none of
 /// which changes the surface made.
 struct RefineOptions : RuleOptions {
