@@ -17,66 +17,14 @@
 #include <tbb/parallel_for.h>
 
 #include "../core/large_buffers.h"
+#include "grid_common.h"
 #include "grid_numbering.h"
 #include "grid_patch.h"
+#include "grid_triangles.h"
 
 namespace subdiv::detail {
 
 namespace {
-
-// The values refined per point: the position, then each vertex channel's.
-struct PointValues {
-  const PolygonMesh& mesh;
-  int width = 3;
-
-  explicit PointValues(const PolygonMesh& m) : mesh(m) {
-    for (const VertexChannel& c : mesh.vertex_channels) width += c.components;
-  }
-  void gather(Index v, double* out) const {
-    const Vec3& p = mesh.positions[static_cast<std::size_t>(v)];
-    out[0] = p.x, out[1] = p.y, out[2] = p.z;
-    out += 3;
-    for (const VertexChannel& c : mesh.vertex_channels) {
-      const auto k = static_cast<std::size_t>(c.components);
-      std::copy_n(c.values.data() + static_cast<std::size_t>(v) * k, k, out);
-      out += k;
-    }
-  }
-};
-
-// Writes one point's values (position, then channels) to vertex v of `out`.
-void scatter(const double* values, Index v, PolygonMesh& out) {
-  out.positions[static_cast<std::size_t>(v)] = {values[0], values[1], values[2]};
-  values += 3;
-  for (VertexChannel& c : out.vertex_channels) {
-    const auto k = static_cast<std::size_t>(c.components);
-    std::copy_n(values, k, c.values.data() + static_cast<std::size_t>(v) * k);
-    values += k;
-  }
-}
-
-// Copies vertex `from` of `in` (position and channels) to vertex `to` of `out`.
-void copy_point(const PolygonMesh& in, Index from, Index to, PolygonMesh& out) {
-  out.positions[static_cast<std::size_t>(to)] = in.positions[static_cast<std::size_t>(from)];
-  for (std::size_t ch = 0; ch < out.vertex_channels.size(); ++ch) {
-    const auto k = static_cast<std::size_t>(out.vertex_channels[ch].components);
-    std::copy_n(in.vertex_channels[ch].values.data() + static_cast<std::size_t>(from) * k, k,
-                out.vertex_channels[ch].values.data() + static_cast<std::size_t>(to) * k);
-  }
-}
-
-constexpr int kMaxGridLevels = 8;
-
-// The options of a level's tags, without its element tags and without tags
-// no module reads, which name the level's elements.
-Tags tag_options(const Tags& parent) {
-  Tags tags = parent;
-  tags.creases.clear();
-  tags.corners.clear();
-  tags.holes.clear();
-  tags.other.clear();
-  return tags;
-}
 
 // The tags of the level `counts.size()` quad splits below `level`: its
 // options, and its crease, corner and hole tags carried down as
@@ -126,149 +74,6 @@ Tags last_level_tags(const PolygonMesh& level, const MeshTopology& t, std::span<
   for (const Index f : holes)
     if (f >= 0 && f < t.face_count())
       for (std::int64_t i = 0; i < per_face; ++i) out.holes.push_back(static_cast<Index>(f * per_face + i));
-  return out;
-}
-
-// Per vertex: whether a crease or corner tag makes it sharp (the rules at
-// it, and at the edges leaving it, are not the regular ones).
-std::vector<char> sharp_vertices(const PolygonMesh& level, const MeshTopology& t) {
-  std::vector<char> sharp(static_cast<std::size_t>(t.vertex_count()));
-  auto valid = [&](Index v) { return v >= 0 && v < t.vertex_count(); };
-  for (const CreaseTag& c : level.tags.creases)
-    if (c.sharpness > 0.0 && valid(c.v0) && valid(c.v1) && t.find_edge(c.v0, c.v1) != kInvalidIndex)
-      sharp[static_cast<std::size_t>(c.v0)] = sharp[static_cast<std::size_t>(c.v1)] = 1;
-  for (const CornerTag& c : level.tags.corners)
-    if (c.sharpness > 0.0 && valid(c.vertex)) sharp[static_cast<std::size_t>(c.vertex)] = 1;
-  return sharp;
-}
-
-// Whether the grid path covers these levels (grid_refine.h), before looking
-// at which faces are regular.
-bool covers(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme, const RefineOptions& options,
-            int levels) {
-  // Deeper runs take their first levels by the masks, while the mesh is
-  // small, so that a face's grid stays within a few megabytes.
-  if (!scheme.fast_path.regular_grid || scheme.split != SplitRule::quad || scheme.steps || levels < 1 ||
-      levels > kMaxGridLevels)
-    return false;
-  if (options.boundary_rules != BoundaryRules::standard || options.allow_non_manifold) return false;
-  for (const FaceVaryingChannel& c : level.face_varying_channels) {
-    if (c.components <= 0 || c.values.size() % static_cast<std::size_t>(c.components) != 0 ||
-        c.indices.size() != static_cast<std::size_t>(t.corner_count()))
-      return false;
-    for (const Index i : c.indices)
-      if (i < 0 || i >= c.value_count()) return false;
-  }
-  for (const VertexChannel& c : level.vertex_channels)
-    if (c.components <= 0 || c.values.size() != level.positions.size() * static_cast<std::size_t>(c.components))
-      return false;
-  // Chaikin's creasing reads a semi-sharp edge's neighbours: the masks.
-  if (crease_method_of(level, options) == CreaseMethod::chaikin)
-    for (const CreaseTag& c : level.tags.creases)
-      if (c.sharpness > 0.0 && c.sharpness < kInfiniteSharpness) return false;
-  for (Index f = 0; f < t.face_count(); ++f)
-    if (t.face_size(f) != 4) return false;
-  for (Index v = 0; v < t.vertex_count(); ++v)
-    if (t.vertex_kind(v) == VertexKind::isolated) return false;
-  return true;
-}
-
-// The faces that are not regular patches and those sharing a vertex with
-// them, as a mesh of their own for the masks (its artificial boundary
-// changes only points outside the faces taken from it), with the number
-// each face has there (kInvalidIndex for faces not in it). Where the level
-// has tags, a second ring: the sharpness and rules of the first ring's edges
-// and vertices then see all their neighbours.
-struct MasksMesh {
-  PolygonMesh mesh;
-  std::vector<Index> face_in_mesh;
-  std::vector<Index> level_vertex;  // of each of its vertices
-};
-
-// nullopt where it would hold more than half the faces.
-std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology& t, const std::vector<char>& regular) {
-  const Index nf = t.face_count();
-  std::vector<char> near(static_cast<std::size_t>(t.vertex_count()));
-  for (Index f = 0; f < nf; ++f)
-    if (!regular[static_cast<std::size_t>(f)])
-      for (const Index v : t.face_vertices(f)) near[static_cast<std::size_t>(v)] = 1;
-  auto touches = [&](Index f) {
-    const auto vertices = t.face_vertices(f);
-    return std::any_of(vertices.begin(), vertices.end(), [&](Index v) { return near[static_cast<std::size_t>(v)] != 0; });
-  };
-  const Tags& tags = level.tags;
-  if (!tags.creases.empty() || !tags.corners.empty() || !tags.holes.empty()) {
-    std::vector<char> ring(static_cast<std::size_t>(nf));
-    for (Index f = 0; f < nf; ++f) ring[static_cast<std::size_t>(f)] = touches(f);
-    for (Index f = 0; f < nf; ++f)
-      if (ring[static_cast<std::size_t>(f)])
-        for (const Index v : t.face_vertices(f)) near[static_cast<std::size_t>(v)] = 1;
-  }
-  MasksMesh local;
-  local.face_in_mesh.assign(static_cast<std::size_t>(nf), kInvalidIndex);
-  std::vector<Index> vertex_in_mesh(static_cast<std::size_t>(t.vertex_count()), kInvalidIndex);
-  PolygonMesh& mesh = local.mesh;
-  mesh.tags = tag_options(tags);
-  for (const VertexChannel& c : level.vertex_channels) mesh.vertex_channels.push_back({c.name, c.components, {}});
-  for (Index f = 0; f < nf; ++f) {
-    const auto vertices = t.face_vertices(f);
-    if (!touches(f)) continue;
-    if (2 * (mesh.face_count() + 1) > nf) return std::nullopt;
-    std::array<Index, 4> face;
-    for (std::size_t c = 0; c < 4; ++c) {
-      const auto v = static_cast<std::size_t>(vertices[c]);
-      if (vertex_in_mesh[v] == kInvalidIndex) {
-        vertex_in_mesh[v] = mesh.vertex_count();
-        local.level_vertex.push_back(vertices[c]);
-        mesh.positions.push_back(level.positions[v]);
-        for (std::size_t ch = 0; ch < level.vertex_channels.size(); ++ch) {
-          const VertexChannel& in = level.vertex_channels[ch];
-          const auto k = static_cast<std::size_t>(in.components);
-          mesh.vertex_channels[ch].values.insert(mesh.vertex_channels[ch].values.end(), in.values.begin() + v * k,
-                                                 in.values.begin() + (v + 1) * k);
-        }
-      }
-      face[c] = vertex_in_mesh[v];
-    }
-    local.face_in_mesh[static_cast<std::size_t>(f)] = mesh.add_face(face);
-  }
-  // The tags on its elements.
-  auto in_mesh = [&](Index v) {
-    return v >= 0 && v < t.vertex_count() ? vertex_in_mesh[static_cast<std::size_t>(v)] : kInvalidIndex;
-  };
-  for (const CreaseTag& c : tags.creases)
-    if (in_mesh(c.v0) != kInvalidIndex && in_mesh(c.v1) != kInvalidIndex)
-      mesh.tags.creases.push_back({in_mesh(c.v0), in_mesh(c.v1), c.sharpness});
-  for (const CornerTag& c : tags.corners)
-    if (in_mesh(c.vertex) != kInvalidIndex) {
-      mesh.tags.corners.push_back(c);
-      mesh.tags.corners.back().vertex = in_mesh(c.vertex);
-    }
-  for (const Index f : tags.holes)
-    if (f >= 0 && f < nf && local.face_in_mesh[static_cast<std::size_t>(f)] != kInvalidIndex)
-      mesh.tags.holes.push_back(local.face_in_mesh[static_cast<std::size_t>(f)]);
-  return local;
-}
-
-// The result's arrays, sized, and its tags (last_level_tags), with the
-// crease method refinement used (as the masks' levels name it).
-PolygonMesh sized_result(const PolygonMesh& level, const MeshTopology& t, const RefineOptions& options,
-                         std::span<const LevelCounts> before, const LevelCounts& counts) {
-  PolygonMesh out;
-  out.tags = last_level_tags(level, t, before);
-  const CreaseMethod method = crease_method_of(level, options);
-  if (out.tags.crease_method != method) {
-    out.tags.crease_method = method;
-    out.tags.crease_method_set = true;
-  }
-  assign_large(out.positions, static_cast<std::size_t>(counts.vertices));
-  assign_large(out.face_offsets, static_cast<std::size_t>(counts.faces) + 1);
-  assign_large(out.face_indices, 4 * static_cast<std::size_t>(counts.faces));
-  for (const VertexChannel& c : level.vertex_channels) {
-    out.vertex_channels.push_back({c.name, c.components, {}});
-    assign_large(out.vertex_channels.back().values,
-                 static_cast<std::size_t>(counts.vertices) * static_cast<std::size_t>(c.components));
-  }
   return out;
 }
 
@@ -335,7 +140,9 @@ struct GridPlan {
 
 std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                    const RefineOptions& options, int levels) {
-  if (!covers(level, t, scheme, options, levels)) return std::nullopt;
+  if (!scheme.fast_path.regular_grid || scheme.split != SplitRule::quad || scheme.steps ||
+      !covers_level(level, t, options, levels, 4))
+    return std::nullopt;
   const Index nf = t.face_count();
   GridPlan plan{.topology = t, .levels = levels, .n = 1 << levels};
   plan.counts.push_back({nf, t.edge_count(), t.vertex_count()});
@@ -365,11 +172,7 @@ std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology&
   std::optional<MasksMesh> local = masks_mesh(level, t, plan.regular);
   if (!local) return std::nullopt;  // mostly irregular: the masks first
   plan.local = std::move(*local);
-  plan.by_masks = options;
-  plan.by_masks.levels = levels;
-  plan.by_masks.regular_grids = false;
-  plan.by_masks.on_level = nullptr;
-  plan.by_masks.allow_non_manifold = true;  // its rim may pinch; the points taken lie inside
+  plan.by_masks = masks_options(options, levels);
   return plan;
 }
 
@@ -408,12 +211,14 @@ void for_each_owned_point(const GridPlan& plan, Index f, Fn&& fn) {
 
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                            const RefineOptions& options, int levels) {
+  if (scheme.split == SplitRule::triangle) return refine_triangles_as_grids(level, t, scheme, options, levels);
   std::optional<GridPlan> plan = plan_grids(level, t, scheme, options, levels);
   if (!plan) return std::nullopt;
   PolygonMesh local_refined;
   if (plan->local.mesh.face_count() > 0) local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
 
-  PolygonMesh out = sized_result(level, t, options, plan->counts, plan->last);
+  PolygonMesh out = sized_result(level, options, last_level_tags(level, t, plan->counts), plan->last.vertices,
+                                 plan->last.faces, 4);
   std::vector<FaceVaryingLevels> face_varying;
   for (std::size_t ch = 0; ch < level.face_varying_channels.size(); ++ch) {
     const FaceVaryingChannel& in = level.face_varying_channels[ch];
@@ -465,6 +270,7 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
 
 std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                               const RefineOptions& options, int levels) {
+  if (scheme.split == SplitRule::triangle) return triangle_stencils_as_grids(level, t, scheme, options, levels);
   std::optional<GridPlan> plan = plan_grids(level, t, scheme, options, levels);
   if (!plan) return std::nullopt;
   // The masks' mesh: its last level's faces (to place its points) and its table.

@@ -158,6 +158,10 @@ bool limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
   return false;
 }
 
+// At valence 6 both betas are 1/16: the quartic box spline's 5/8 and 1/16
+// at a vertex, 3/8 and 1/8 at an edge.
+constexpr RegularTriangleGrid kRegularGrid{.centre = 0.625, .ring = 0.0625, .near = 0.375, .far = 0.125};
+
 }  // namespace
 
 const Scheme& loop_scheme() {
@@ -169,7 +173,8 @@ const Scheme& loop_scheme() {
       .traits = {.needs_triangles = true, .paper_depth_bound = PaperDepthBound::loop_theorem_3},
       .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_beta>,
                 .boundary_curve = &cubic_bspline_curve_scheme()},
-      .limit_masks = limit_masks<loop_beta>};
+      .limit_masks = limit_masks<loop_beta>,
+      .fast_path = {.regular_triangle_grid = &kRegularGrid}};
   return scheme;
 }
 
@@ -182,7 +187,8 @@ const Scheme& loop_warren_scheme() {
       .traits = {.needs_triangles = true},
       .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_warren_beta>,
                 .boundary_curve = &cubic_bspline_curve_scheme()},
-      .limit_masks = limit_masks<loop_warren_beta>};
+      .limit_masks = limit_masks<loop_warren_beta>,
+      .fast_path = {.regular_triangle_grid = &kRegularGrid}};
   return scheme;
 }
 

@@ -342,6 +342,16 @@ struct RegularGrid {
   std::array<double, 2> odd;
 };
 
+/// A triangle-split scheme's rule on regular regions (interior vertices of
+/// valence 6, no sharp edge), on the triangular lattice: a new vertex point
+/// is `centre` times its vertex plus `ring` times each of its six
+/// neighbours; a new edge point is `near` times each end of its edge plus
+/// `far` times each of the two vertices opposite it. Declared where the
+/// scheme's masks there are these (a test derives them from the masks).
+struct RegularTriangleGrid {
+  double centre, ring, near, far;
+};
+
 /// Shortcuts of the fast path (refine()), each held to the masks by tests.
 struct FastPath {
   /// The level's positions (PositionEvaluator); nullptr: the masks. Vertex
@@ -360,6 +370,8 @@ struct FastPath {
   /// refine_stencil_table() then refine the faces whose corners are regular
   /// as grids (src/refine/grid_refine.h). nullptr: none.
   const RegularGrid* regular_grid = nullptr;
+  /// The same for a triangle-split scheme (RegularTriangleGrid).
+  const RegularTriangleGrid* regular_triangle_grid = nullptr;
 };
 
 /// A subdivision scheme, declared by its rule file with designated

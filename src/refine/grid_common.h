@@ -1,0 +1,73 @@
+#pragma once
+// What the grid path's quad and triangle splits share (grid_refine.h): the
+// values refined per point, the checks before it applies, the masks' mesh
+// around the faces that are not regular, and the result's arrays.
+
+#include <optional>
+#include <vector>
+
+#include "subdiv/core/types.h"
+#include "subdiv/mesh/polygon_mesh.h"
+#include "subdiv/mesh/tags.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/refine/refine.h"
+
+namespace subdiv::detail {
+
+// Deeper runs take their first levels by the masks, while the mesh is
+// small, so that a face's grid stays within a few megabytes.
+constexpr int kMaxGridLevels = 8;
+
+// The values refined per point: the position, then each vertex channel's.
+struct PointValues {
+  const PolygonMesh& mesh;
+  int width = 3;
+
+  explicit PointValues(const PolygonMesh& m);
+  void gather(Index v, double* out) const;
+};
+
+// Writes one point's values (position, then channels) to vertex v of `out`.
+void scatter(const double* values, Index v, PolygonMesh& out);
+
+// Copies vertex `from` of `in` (position and channels) to vertex `to` of `out`.
+void copy_point(const PolygonMesh& in, Index from, Index to, PolygonMesh& out);
+
+// The options of a level's tags, without its element tags and without tags
+// no module reads, which name the level's elements.
+Tags tag_options(const Tags& parent);
+
+// Per vertex: whether a crease or corner tag makes it sharp (the rules at
+// it, and at the edges leaving it, are not the regular ones).
+std::vector<char> sharp_vertices(const PolygonMesh& level, const MeshTopology& t);
+
+// Whether the grid path covers `levels` levels of this level, every face
+// of `face_size` corners, apart from the scheme and which faces are regular.
+bool covers_level(const PolygonMesh& level, const MeshTopology& t, const RefineOptions& options, int levels,
+                  Index face_size);
+
+// The faces that are not regular patches and those sharing a vertex with
+// them, as a mesh of their own for the masks (its artificial boundary
+// changes only points outside the faces taken from it), with the number
+// each face has there (kInvalidIndex for faces not in it). Where the level
+// has tags, a second ring: the sharpness and rules of the first ring's edges
+// and vertices then see all their neighbours.
+struct MasksMesh {
+  PolygonMesh mesh;
+  std::vector<Index> face_in_mesh;
+  std::vector<Index> level_vertex;  // of each of its vertices
+};
+
+// nullopt where it would hold more than half the faces.
+std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology& t, const std::vector<char>& regular);
+
+// The options refining the masks' mesh: `levels` levels by the masks alone.
+RefineOptions masks_options(const RefineOptions& options, int levels);
+
+// The result's arrays, sized for `vertices` vertices and `faces` faces of
+// `face_size` corners, with `tags` and the crease method refinement used
+// (as the masks' levels name it).
+PolygonMesh sized_result(const PolygonMesh& level, const RefineOptions& options, Tags tags, std::int64_t vertices,
+                         std::int64_t faces, Index face_size);
+
+}  // namespace subdiv::detail

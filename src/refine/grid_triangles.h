@@ -1,0 +1,23 @@
+#pragma once
+// The grid path (grid_refine.h) of triangle-split schemes that declare
+// their regular rule (FastPath::regular_triangle_grid): regular triangles
+// refined on the triangular lattice (triangle_patch.h), numbered by
+// triangle_numbering.h; the others by the masks on a small mesh.
+
+#include <optional>
+
+#include "subdiv/core/stencil_table.h"
+#include "subdiv/mesh/polygon_mesh.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/refine/refine.h"
+#include "subdiv/rules/scheme.h"
+
+namespace subdiv::detail {
+
+std::optional<PolygonMesh> refine_triangles_as_grids(const PolygonMesh& level, const MeshTopology& topology,
+                                                     const Scheme& scheme, const RefineOptions& options, int levels);
+
+std::optional<StencilTable> triangle_stencils_as_grids(const PolygonMesh& level, const MeshTopology& topology,
+                                                       const Scheme& scheme, const RefineOptions& options, int levels);
+
+}  // namespace subdiv::detail
