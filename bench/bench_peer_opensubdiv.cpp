@@ -71,7 +71,7 @@ BENCHMARK(BM_Peer_OpenSubdiv_Refine_CatmullClark)
 void BM_Peer_OpenSubdiv_Refine_Loop(benchmark::State& state) {
   osd_refine_bench(state, triangulated_torus(static_cast<int>(state.range(0))), Sdc::SCHEME_LOOP);
 }
-BENCHMARK(BM_Peer_OpenSubdiv_Refine_Loop)->Args({708, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Peer_OpenSubdiv_Refine_Loop)->Args({112, 4})->Args({708, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_Peer_OpenSubdiv_StencilBuild_CatmullClark(benchmark::State& state) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));

@@ -47,8 +47,13 @@ BENCHMARK(BM_Refine_CatmullClark_ByMasks)
 void BM_Refine_Loop(benchmark::State& state) {
   refine_bench(state, triangulated_torus(static_cast<int>(state.range(0))), "loop");
 }
-// 1M triangles to level 2 (16M triangles).
-BENCHMARK(BM_Refine_Loop)->Args({708, 2, 1})->Args({708, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+// 25k triangles to level 4 (6.4M triangles); 1M triangles to level 2 (16M triangles).
+BENCHMARK(BM_Refine_Loop)->Args({256, 3, 1})->Args({112, 4, 1})->Args({708, 2, 1})->Args({708, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Refine_Loop_ByMasks(benchmark::State& state) {
+  refine_bench(state, triangulated_torus(static_cast<int>(state.range(0))), "loop", false);
+}
+BENCHMARK(BM_Refine_Loop_ByMasks)->Args({256, 3, 1})->Args({112, 4, 1})->Args({708, 2, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Every scheme on the same inputs, one thread, items = output faces: the
 // Butterfly schemes against Loop, Doo-Sabin against Catmull-Clark

@@ -211,7 +211,8 @@ void for_each_owned_point(const GridPlan& plan, Index f, Fn&& fn) {
 
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                            const RefineOptions& options, int levels) {
-  if (scheme.split == SplitRule::triangle) return refine_triangles_as_grids(level, t, scheme, options, levels);
+  if (scheme.split == SplitRule::triangle)
+    return levels >= kMinTriangleGridLevels ? refine_triangles_as_grids(level, t, scheme, options, levels) : std::nullopt;
   std::optional<GridPlan> plan = plan_grids(level, t, scheme, options, levels);
   if (!plan) return std::nullopt;
   PolygonMesh local_refined;
@@ -270,7 +271,9 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
 
 std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                               const RefineOptions& options, int levels) {
-  if (scheme.split == SplitRule::triangle) return triangle_stencils_as_grids(level, t, scheme, options, levels);
+  if (scheme.split == SplitRule::triangle)
+    return levels >= kMinTriangleGridLevels ? triangle_stencils_as_grids(level, t, scheme, options, levels)
+                                            : std::nullopt;
   std::optional<GridPlan> plan = plan_grids(level, t, scheme, options, levels);
   if (!plan) return std::nullopt;
   // The masks' mesh: its last level's faces (to place its points) and its table.

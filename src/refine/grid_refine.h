@@ -1,20 +1,24 @@
 #pragma once
-// The grid path of refine(): the remaining levels of a quad-split scheme
-// that declares its regular rule (FastPath::regular_grid), made in one go.
+// The grid path of refine(): the remaining levels of a quad- or
+// triangle-split scheme that declares its regular rule
+// (FastPath::regular_grid, FastPath::regular_triangle_grid), made in one go.
 //
-// Each face of the starting level (all quads) refines on its own. A face
-// whose corners are interior vertices of valence 4 with no sharp edge or
-// corner tag is a regular patch: its 4 x 4 control points are gathered once
-// and refined as a grid by the declared tensor stencil, without any
+// Each face of the starting level (all quads, or all triangles) refines on
+// its own. A face whose corners are interior vertices of the regular
+// valence (4 or 6) with no sharp edge or corner tag is a regular patch: its
+// control points (4 x 4, or the 12 of the triangular lattice) are gathered
+// once and refined as a grid by the declared stencil, without any
 // intermediate topology. The other faces (extraordinary or sharp corners,
 // boundaries) are refined by the masks on a small mesh: those faces and the
 // faces sharing a vertex with them, which is everything their points read
 // (a second ring where tags are present, for the rules at the first ring's
 // vertices). Vertex numbers, faces and tags of the result are computed by
-// index arithmetic, so the result is the masks' mesh (the same numbering,
-// tags and face-varying values; positions and vertex channels equal up to
-// rounding), written once into its final arrays. Each shared point is
-// written by one owning face, so results do not depend on the thread count.
+// index arithmetic (grid_numbering.h; triangle_numbering.h, which derives
+// light arrays for all but the last two levels), so the result is the
+// masks' mesh (the same numbering, tags and face-varying values; positions
+// and vertex channels equal up to rounding), written once into its final
+// arrays. Each shared point is written by one owning face, so results do
+// not depend on the thread count.
 
 #include <optional>
 
@@ -29,9 +33,11 @@ namespace subdiv::detail {
 /// `levels` steps of `scheme` from `level` (its topology `topology`; the
 /// mesh's face arrays may have been dropped) through the grid path, or
 /// nullopt where it does not apply: a scheme without a regular grid rule,
-/// piecewise-smooth rules or non-manifold refinement, a face that is not a
-/// quad, an isolated vertex, semi-sharp creases with Chaikin's creasing,
-/// malformed face-varying channels, more than 8 levels; or where the mesh refined by
+/// piecewise-smooth rules or non-manifold refinement, a face of the other
+/// kind, an isolated vertex, semi-sharp creases with Chaikin's creasing,
+/// malformed face-varying channels, more than 8 levels (or, for triangles,
+/// fewer than 3: kMinTriangleGridLevels), two triangles on the same three
+/// vertices; or where the mesh refined by
 /// the masks would hold more than half the faces (the caller then refines
 /// one level by the masks and asks again).
 std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshTopology& topology,

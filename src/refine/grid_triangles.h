@@ -14,6 +14,14 @@
 
 namespace subdiv::detail {
 
+// refine_as_grids() and stencils_as_grids() take triangles only from this
+// many remaining levels on: with fewer, a face's grid is too small to repay
+// its patch and numbering, and the masks are faster (BENCHMARKS.md,
+// "Triangles as grids").
+constexpr int kMinTriangleGridLevels = 3;
+
+// The grid path for any number of levels (1 .. 8), as refine_as_grids()
+// and stencils_as_grids() describe it.
 std::optional<PolygonMesh> refine_triangles_as_grids(const PolygonMesh& level, const MeshTopology& topology,
                                                      const Scheme& scheme, const RefineOptions& options, int levels);
 

@@ -18,27 +18,33 @@ bool gather_triangle_patch(const MeshTopology& t, Index f, std::array<Index, 16>
   patch.fill(kInvalidIndex);
   if (t.face_size(f) != 3) return false;
   const Index first = t.face_first_corner(f);
+  const Index corner_vertex[3] = {t.corner_vertex(first), t.corner_vertex(first + 1), t.corner_vertex(first + 2)};
   for (int k = 0; k < 3; ++k) {
-    const Index v = t.corner_vertex(first + k);
-    if (t.vertex_kind(v) != VertexKind::interior || t.valence(v) != 6 || t.vertex_face_count(v) != 6) return false;
+    const Index v = corner_vertex[k];
+    if (t.vertex_kind(v) != VertexKind::interior || t.valence(v) != 6 || t.vertex_face_count(v) != 6 ||
+        !t.ring_ordered(v))
+      return false;
+    // The ring's edges in order (the level's faces are all triangles, so
+    // consecutive ring vertices bound a face at v): find the next corner,
+    // and the direction in which the previous one follows it.
+    const auto ring = t.vertex_edges(v);
+    auto ring_vertex = [&](int j) { return t.other_vertex(ring[static_cast<std::size_t>(((j % 6) + 6) % 6)], v); };
+    int start = 0;
+    while (start < 6 && ring_vertex(start) != corner_vertex[(k + 1) % 3]) ++start;
+    if (start == 6) return false;
+    const Index previous = corner_vertex[(k + 2) % 3];
+    const int step = ring_vertex(start + 1) == previous ? 1 : ring_vertex(start - 1) == previous ? -1 : 0;
+    if (step == 0) return false;
     // Corner k's next corner lies in direction 2k (towards (1, 0), then
-    // (-1, 1), then (0, -1)); each face around v turns it once.
-    Index corner = first + k;
+    // (-1, 1), then (0, -1)), the ring turning counter-clockwise from it.
     for (int turn = 0; turn < 6; ++turn) {
-      if (t.face_size(t.corner_face(corner)) != 3) return false;
-      const std::pair<Index, int> points[2] = {{t.corner_vertex(t.corner_next(corner)), (2 * k + turn) % 6},
-                                               {t.corner_vertex(t.corner_prev(corner)), (2 * k + turn + 1) % 6}};
-      for (const auto& [vertex, d] : points) {
-        const int i = kCorner[k][0] + kDirection[d][0], j = kCorner[k][1] + kDirection[d][1];
-        Index& slot = patch[static_cast<std::size_t>((i + 1) + 4 * (j + 1))];
-        if (slot != kInvalidIndex && slot != vertex) return false;
-        slot = vertex;
-      }
-      // The next face around v, across the edge towards the previous corner.
-      corner = t.corner_across(t.corner_prev(corner));
-      if (corner == kInvalidIndex || t.corner_vertex(corner) != v) return false;
+      const int d = (2 * k + turn) % 6;
+      const int i = kCorner[k][0] + kDirection[d][0], j = kCorner[k][1] + kDirection[d][1];
+      const Index vertex = ring_vertex(start + step * turn);
+      Index& slot = patch[static_cast<std::size_t>((i + 1) + 4 * (j + 1))];
+      if (slot != kInvalidIndex && slot != vertex) return false;
+      slot = vertex;
     }
-    if (corner != first + k) return false;
   }
   std::array<Index, 16> sorted = patch;
   std::sort(sorted.begin(), sorted.end());

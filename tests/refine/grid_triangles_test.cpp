@@ -12,10 +12,12 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "grid_test_support.h"
+#include "refine/grid_triangles.h"
 #include "refine/triangle_patch.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
@@ -167,14 +169,18 @@ TEST(GridTriangles, EqualsTheMasksOnRealMeshes) {
     }
     mesh.tags.boundary_interpolation = BoundaryInterpolation::edge_and_corner;
     if (!test::rejection(mesh, loop_scheme(), with_grids(true, 1)).empty()) continue;  // not triangles, or not refinable
-    for (int levels = 1; levels <= 3; ++levels)
+    // These small shapes are mostly extraordinary: the path applies after
+    // two levels of the masks, so five are compared where that is quick.
+    for (int levels = 3; levels <= (mesh.face_count() <= 200 ? 5 : 4); ++levels)
       expect_grids_equal_masks(mesh, loop_scheme(), levels, file.filename().string());
-    by_grids += takes_grids(refine(mesh, loop_scheme(), with_grids(false, 2)), loop_scheme(), 1);
+    if (mesh.face_count() <= 200)
+      by_grids += takes_grids(refine(mesh, loop_scheme(), with_grids(false, 2)), loop_scheme(), 3);
     ++compared;
   }
   if (!fs::is_directory(shapes)) GTEST_SKIP() << "shared OpenSubdiv shapes not found at " << shapes;
   EXPECT_GE(compared, 4);
-  EXPECT_GE(by_grids, 2) << "the grid path took too few meshes to be tested by them";
+  // loop_cube and the face-varying boundary shapes.
+  EXPECT_GE(by_grids, 4) << "the grid path took too few meshes to be tested by them";
 }
 
 TEST(GridTriangles, StencilTablesEqualTheMasks) {
@@ -207,26 +213,54 @@ TEST(GridTriangles, SameResultForAnyThreadCount) {
   }
 }
 
+// refine() takes triangles as grids from 3 remaining levels on; the path
+// itself covers 1 and 2 levels too (its numbering's shortest cases).
+TEST(GridTriangles, OneAndTwoLevelsEqualTheMasks) {
+  for (const PolygonMesh& mesh : {with_face_varying(with_channels(triangulated_torus(6))), tagged_triangulated_torus(),
+                                  test::jittered(test::triangle_grid(24, 20), 4)})
+    for (int levels = 1; levels <= 2; ++levels) {
+      const MeshTopology topology(mesh);
+      const std::optional<PolygonMesh> grids =
+          detail::refine_triangles_as_grids(mesh, topology, loop_scheme(), with_grids(true, levels), levels);
+      ASSERT_TRUE(grids.has_value()) << levels << " levels";
+      const PolygonMesh masks = refine(mesh, loop_scheme(), with_grids(false, levels));
+      EXPECT_EQ(grids->face_indices, masks.face_indices) << levels << " levels";
+      EXPECT_EQ(grids->tags, masks.tags) << levels << " levels";
+      ASSERT_EQ(grids->vertex_count(), masks.vertex_count());
+      for (Index v = 0; v < masks.vertex_count(); ++v)
+        ASSERT_LE(norm(grids->positions[static_cast<std::size_t>(v)] - masks.positions[static_cast<std::size_t>(v)]),
+                  kRelativeTolerance * diagonal(mesh))
+            << levels << " levels, vertex " << v;
+      ASSERT_EQ(grids->face_varying_channels.size(), masks.face_varying_channels.size());
+      for (std::size_t ch = 0; ch < masks.face_varying_channels.size(); ++ch) {
+        EXPECT_EQ(grids->face_varying_channels[ch].indices, masks.face_varying_channels[ch].indices);
+        EXPECT_TRUE(grids->face_varying_channels[ch].values == masks.face_varying_channels[ch].values);
+      }
+    }
+}
+
 TEST(GridTriangles, DeclinesWhatItDoesNotCover) {
-  EXPECT_TRUE(takes_grids(triangulated_torus(6), loop_scheme(), 2));
+  EXPECT_TRUE(takes_grids(triangulated_torus(6), loop_scheme(), 3));
+  EXPECT_FALSE(takes_grids(triangulated_torus(6), loop_scheme(), 2));  // too few levels to repay the grids
   // Two faces on the same three vertices: the split's numbering merges
   // their children's edges, which the generic construction handles.
   PolygonMesh closed_pillow;
   closed_pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   closed_pillow.add_face({0, 1, 2});
   closed_pillow.add_face({0, 2, 1});
-  EXPECT_FALSE(takes_grids(closed_pillow, loop_scheme(), 2));
-  EXPECT_EQ(refine(closed_pillow, loop_scheme(), with_grids(true, 2)).face_indices,
-            refine(closed_pillow, loop_scheme(), with_grids(false, 2)).face_indices);
+  EXPECT_FALSE(detail::refine_triangles_as_grids(closed_pillow, MeshTopology(closed_pillow), loop_scheme(),
+                                                 with_grids(true, 3), 3));
+  EXPECT_EQ(refine(closed_pillow, loop_scheme(), with_grids(true, 3)).face_indices,
+            refine(closed_pillow, loop_scheme(), with_grids(false, 3)).face_indices);
   // Quads are not its faces; piecewise-smooth rules are the masks'.
-  EXPECT_FALSE(takes_grids(torus(6), loop_scheme(), 2));
+  EXPECT_FALSE(takes_grids(torus(6), loop_scheme(), 3));
   const PolygonMesh torus6 = triangulated_torus(6);
   const MeshTopology topology(torus6);
-  RefineOptions piecewise = with_grids(true, 2);
+  RefineOptions piecewise = with_grids(true, 3);
   piecewise.boundary_rules = BoundaryRules::piecewise_smooth;
-  EXPECT_FALSE(detail::refine_as_grids(torus6, topology, loop_scheme(), piecewise, 2));
+  EXPECT_FALSE(detail::refine_as_grids(torus6, topology, loop_scheme(), piecewise, 3));
   // Mostly extraordinary meshes take the masks first.
-  EXPECT_FALSE(takes_grids(test::tetrahedron(), loop_scheme(), 2));
+  EXPECT_FALSE(takes_grids(test::tetrahedron(), loop_scheme(), 3));
 }
 
 }  // namespace
