@@ -81,8 +81,10 @@ struct RefineOptions : RuleOptions {
   /// Worker threads; 0 = all available. Results are identical for any count.
   int threads = 0;
   /// Refine the regular faces of schemes that declare a grid rule
-  /// (FastPath::regular_grid: Catmull-Clark, bilinear) as grids, the
-  /// remaining levels at once, where the level has only quads (refine() and
+  /// (FastPath::regular_grid: Catmull-Clark, bilinear;
+  /// FastPath::regular_triangle_grid: Loop, Loop-Warren, linear) as grids,
+  /// the remaining levels at once, where the level has only quads (or only
+  /// triangles, with at least three levels to go) (refine() and
   /// refine_stencil_table(); docs/refinement.md says where it declines). The
   /// result is the same mesh, numbering, tags and face-varying values
   /// included, with positions, vertex channels and stencil weights equal up
