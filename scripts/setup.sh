@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages subdiv needs to build, test and benchmark.
 # Idempotent: when everything is present it only runs dpkg-query and exits.
+# Usage: scripts/setup.sh [--fuzz]   (--fuzz: also clang and libFuzzer, for scripts/fuzz.sh)
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,10 @@ packages=(
   libassimp-dev libosd-dev  # peers in bench/ (Assimp import, OpenSubdiv topology)
   python3  # the CLI test reads the --json documents
 )
+
+if [ "${1:-}" = "--fuzz" ]; then
+  packages+=(clang-14 libclang-rt-14-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

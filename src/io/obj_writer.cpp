@@ -2,9 +2,13 @@
 // vertex channel), the "uv" and "normal" face-varying channels, faces,
 // polylines (`l` lines), and tags in OpenSubdiv's syntax.
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <string_view>
 
+#include "subdiv/core/error.h"
 #include "subdiv/io/obj.h"
 #include "text_format.h"
 
@@ -15,7 +19,18 @@ namespace {
 using detail::append_lines;
 using detail::append_number;
 
-void append_tag_header(std::string& out, const char* name, std::size_t ints, std::size_t floats, std::size_t strings) {
+/// A kept tag's name and strings are written as tokens: one that is empty or
+/// holds white space or a line break would be read back as something else.
+void require_token(std::string_view tag, std::string_view token) {
+  const bool splits = token.empty() || std::any_of(token.begin(), token.end(), [](char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+  });
+  if (splits)
+    throw InvalidInputError("tag '" + std::string(tag) + "': the name and strings of a tag must be non-empty and hold no white space, "
+                            "so '" + std::string(token) + "' cannot be written to OBJ");
+}
+
+void append_tag_header(std::string& out, std::string_view name, std::size_t ints, std::size_t floats, std::size_t strings) {
   out += "t ";
   out += name;
   out += ' ';
@@ -89,7 +104,9 @@ void append_tags(std::string& out, const Tags& tags) {
     out += tags.triangle_subdivision == TriangleSubdivision::catmark ? " catmark\n" : " smooth\n";
   }
   for (const auto& raw : tags.other) {
-    append_tag_header(out, raw.name.c_str(), raw.ints.size(), raw.floats.size(), raw.strings.size());
+    require_token(raw.name, raw.name);
+    for (const auto& s : raw.strings) require_token(raw.name, s);
+    append_tag_header(out, raw.name, raw.ints.size(), raw.floats.size(), raw.strings.size());
     for (const long long i : raw.ints) {
       out += ' ';
       append_number(out, i);

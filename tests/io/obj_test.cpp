@@ -265,6 +265,27 @@ TEST(ObjWriter, RefusesMalformedMeshes) {
   EXPECT_THROW(format_obj(mesh), InvalidInputError);
 }
 
+TEST(ObjWriter, KeptTagNamesRoundTripWhateverTheirBytes) {
+  // Found by fuzz_obj: a name holding a NUL byte was written up to the NUL,
+  // and the written file did not parse.
+  const std::string text("v 0 0 0\nt a\0b 1/0/1 7 s\0t\n", 26);
+  const MeshFile first = parse_obj(text);
+  ASSERT_EQ(first.mesh.tags.other.size(), 1u);
+  EXPECT_EQ(first.mesh.tags.other[0].name, std::string("a\0b", 3));
+  const MeshFile back = parse_obj(format_obj(first.mesh));
+  EXPECT_EQ(back.mesh.tags, first.mesh.tags);
+}
+
+TEST(ObjWriter, RefusesKeptTagsItCannotWriteAsTokens) {
+  PolygonMesh mesh = test::cube();
+  mesh.tags.other.push_back({"two words", {}, {}, {}});
+  EXPECT_THROW(format_obj(mesh), InvalidInputError);
+  mesh.tags.other.back() = {"faceedit", {}, {}, {"line\nbreak"}};
+  EXPECT_THROW(format_obj(mesh), InvalidInputError);
+  mesh.tags.other.back() = {"", {}, {}, {}};
+  EXPECT_THROW(format_obj(mesh), InvalidInputError);
+}
+
 TEST(ObjWriter, WarnsAboutChannelsItCannotHold) {
   PolygonMesh mesh = test::cube();
   mesh.vertex_channels.push_back({"weight", 1, std::vector<double>(8, 1.0)});

@@ -1,0 +1,146 @@
+#include "fuzz_checks.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "subdiv/core/error.h"
+#include "subdiv/io/obj.h"
+#include "subdiv/io/off.h"
+#include "subdiv/io/ply.h"
+#include "subdiv/mesh/validation.h"
+#include "subdiv/refine/refine.h"
+#include "subdiv/rules/scheme.h"
+
+namespace subdiv::fuzz {
+namespace {
+
+// Refinement grows a mesh about fourfold a level: these keep every input's
+// work to milliseconds, so the fuzzer spends its time on new shapes.
+constexpr Index kMaxFaces = 64;
+constexpr Index kMaxVertices = 256;
+constexpr Index kMaxFacesForTwoLevels = 16;
+
+/// A finding: prints why and aborts, so that libFuzzer keeps the input.
+[[noreturn]] void fail(const std::string& why) {
+  std::fprintf(stderr, "fuzz invariant broken: %s\n", why.c_str());
+  std::abort();
+}
+
+std::string_view as_text(const std::uint8_t* data, std::size_t size) {
+  return {reinterpret_cast<const char*>(data), size};
+}
+
+bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+/// A mesh the reader accepted must survive its own format's writer: the
+/// points and faces come back unchanged (the writers print shortest
+/// round-trip numbers). A typed error from the second read is a finding: the
+/// writer wrote what the reader refuses.
+template <class Format, class Parse>
+void check_round_trip(const MeshFile& first, Format format, Parse parse, const char* what) {
+  std::string text;
+  try {
+    text = format(first.mesh);
+  } catch (const InvalidInputError&) {
+    return;  // the writer's documented refusal of arrays it cannot represent
+  }
+  MeshFile second;
+  try {
+    second = parse(std::string_view(text));
+  } catch (const Error& e) {
+    fail(std::string(what) + ": the writer's output does not parse: " + e.what());
+  }
+  const PolygonMesh& a = first.mesh;
+  const PolygonMesh& b = second.mesh;
+  if (a.vertex_count() != b.vertex_count() || a.face_offsets != b.face_offsets || a.face_indices != b.face_indices)
+    fail(std::string(what) + ": faces or the vertex count changed by a write and a read");
+  for (Index v = 0; v < a.vertex_count(); ++v)
+    for (int c = 0; c < 3; ++c)
+      if (!same_number(a.positions[v][c], b.positions[v][c]))
+        fail(std::string(what) + ": a position changed by a write and a read, vertex " + std::to_string(v));
+}
+
+template <class Parse>
+bool try_parse(Parse parse, MeshFile& file) {
+  try {
+    file = parse();
+    return true;
+  } catch (const ParseError&) {
+    return false;
+  }
+}
+
+}  // namespace
+
+void check_obj_input(const std::uint8_t* data, std::size_t size) {
+  MeshFile file;
+  if (!try_parse([&] { return parse_obj(as_text(data, size), "fuzz.obj"); }, file)) return;
+  (void)validate(file.mesh, &file.lines);
+  WriteOptions options;
+  options.threads = 1;
+  check_round_trip(
+      file, [&](const PolygonMesh& m) { return format_obj(m, options); },
+      [](std::string_view t) { return parse_obj(t, "round-trip.obj"); }, "OBJ");
+}
+
+void check_ply_input(const std::uint8_t* data, std::size_t size) {
+  MeshFile file;
+  if (!try_parse([&] { return parse_ply(as_text(data, size), "fuzz.ply"); }, file)) return;
+  (void)validate(file.mesh, &file.lines);
+  const auto read_back = [](std::string_view t) { return parse_ply(t, "round-trip.ply"); };
+  check_round_trip(
+      file, [](const PolygonMesh& m) { return format_ply(m, PlyEncoding::ascii, nullptr, 1); }, read_back,
+      "PLY ascii");
+  check_round_trip(
+      file, [](const PolygonMesh& m) { return format_ply(m, PlyEncoding::binary_big_endian, nullptr, 1); },
+      read_back, "PLY binary");
+}
+
+void check_off_input(const std::uint8_t* data, std::size_t size) {
+  MeshFile file;
+  if (!try_parse([&] { return parse_off(as_text(data, size), "fuzz.off"); }, file)) return;
+  (void)validate(file.mesh, &file.lines);
+  check_round_trip(
+      file, [](const PolygonMesh& m) { return format_off(m, nullptr, 1); },
+      [](std::string_view t) { return parse_off(t, "round-trip.off"); }, "OFF");
+}
+
+void check_pipeline_input(const std::uint8_t* data, std::size_t size) {
+  if (size < 1) return;
+  const std::uint8_t selector = data[0];
+  const std::string_view bytes = as_text(data + 1, size - 1);
+  MeshFile file;
+  const bool parsed = try_parse(
+      [&] {
+        switch (selector % 3) {
+          case 0: return parse_obj(bytes, "fuzz.obj");
+          case 1: return parse_ply(bytes, "fuzz.ply");
+          default: return parse_off(bytes, "fuzz.off");
+        }
+      },
+      file);
+  if (!parsed) return;
+  const PolygonMesh& mesh = file.mesh;
+  if (mesh.face_count() == 0 || mesh.face_count() > kMaxFaces || mesh.vertex_count() > kMaxVertices) return;
+  if (!validate(mesh, &file.lines).ok()) return;
+
+  RefineOptions options;
+  options.threads = 1;
+  options.levels = (selector / 3) % 2 == 1 && mesh.face_count() <= kMaxFacesForTwoLevels ? 2 : 1;
+  for (const Scheme* scheme : all_schemes()) {
+    PolygonMesh refined;
+    try {
+      refined = refine(mesh, *scheme, options, &file.lines);
+    } catch (const Error&) {
+      continue;  // the scheme refuses this mesh, with a message
+    }
+    const ValidationReport report = validate(refined);
+    if (!report.ok())
+      fail(std::string(scheme->name) + " made an invalid mesh from a valid one: " + report.first_error());
+  }
+}
+
+}  // namespace subdiv::fuzz

@@ -1,0 +1,100 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/, clang with AddressSanitizer and
+# UndefinedBehaviorSanitizer) and runs each one for a while.
+#
+# Usage: scripts/fuzz.sh [--seconds N | --runs N] [--max-len B] [--targets "obj ply off pipeline"]
+#   --seconds N   per target, one after the other (default 60: CI's short run)
+#   --runs N      instead: N executions per target (the long campaign)
+#   --max-len B   the largest input tried, in bytes (default 16384)
+#   --targets T   which targets (default all four); a long campaign on two
+#                 cores runs two of these scripts side by side
+#
+# Seeds are fuzz/seeds (PLY and OFF in every encoding the readers take), the
+# small bundled meshes, tests/data and, where present, the shared meshes (../shared/data/meshes); each target's growing corpus lives in
+# build-fuzz/corpus/<target>, so a long campaign can be resumed. A finding
+# (crash, sanitizer report, broken invariant, timeout, out of memory) stops
+# the run with a non-zero exit and leaves the input in build-fuzz/findings/:
+# minimize it (fuzz_<target> -minimize_crash=1 INPUT), keep it under
+# tests/data/fuzz/<target>/ and the test suite checks it on every build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+seconds=60
+runs=-1
+max_len=16384
+targets="obj ply off pipeline"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --seconds) seconds="$2"; shift 2 ;;
+    --runs) runs="$2"; seconds=0; shift 2 ;;
+    --max-len) max_len="$2"; shift 2 ;;
+    --targets) targets="$2"; shift 2 ;;
+    *) echo "fuzz.sh: unknown option $1 (see the comment at the top)" >&2; exit 2 ;;
+  esac
+done
+
+bash scripts/setup.sh --fuzz
+
+build_dir=build-fuzz
+args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" -DSUBDIV_BUILD_FUZZERS=ON
+      -DSUBDIV_BUILD_TOOLS=OFF -DSUBDIV_BUILD_TESTS=OFF -DSUBDIV_BUILD_EXAMPLES=OFF -DSUBDIV_BUILD_BENCHMARKS=OFF)
+if [ "${CI:-}" = "true" ]; then args+=(-DSUBDIV_WARNINGS_AS_ERRORS=ON); fi
+generator=()
+if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
+if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+  CXX=clang++-14 cmake -S . -B "$build_dir" "${generator[@]}" "${args[@]}"
+fi
+cmake --build "$build_dir" --parallel "$(nproc)"
+
+# Seeds: small files of each format (under 64 KiB keeps the runs fast).
+seed_files() {  # extension
+  find fuzz/seeds data/meshes tests/data ../shared/data/meshes -type f -iname "*.$1" -size -64k 2>/dev/null | sort
+}
+seeds="$(mktemp -d)"  # one per run, so that two runs side by side do not share it
+trap 'rm -rf "$seeds"' EXIT
+for format in obj ply off; do
+  mkdir -p "$seeds/$format"
+  seed_files "$format" | while read -r f; do cp "$f" "$seeds/$format/$(echo "${f#../}" | tr '/' '_')"; done
+done
+# The pipeline's first byte picks the format (byte % 3) and one or two levels ((byte / 3) odd).
+mkdir -p "$seeds/pipeline"
+selector=0
+for format in obj ply off; do
+  for f in "$seeds/$format"/*; do
+    [ -e "$f" ] || continue
+    for levels in 0 1; do
+      byte=$((selector + 3 * levels))
+      { printf "\\$(printf '%03o' "$byte")"; cat "$f"; } > "$seeds/pipeline/${levels}_$(basename "$f")"
+    done
+  done
+  selector=$((selector + 1))
+done
+if [ ! -d ../shared/data/meshes ]; then
+  echo "fuzz.sh: ../shared/data/meshes is absent: seeding from the bundled meshes only"
+fi
+
+findings="$build_dir/findings"
+mkdir -p "$findings"
+status=0
+for target in $targets; do
+  corpus="$build_dir/corpus/$target"
+  mkdir -p "$corpus" "$findings/$target"
+  dict=()
+  case "$target" in
+    obj|ply|off) dict=(-dict="fuzz/dict/$target.dict") ;;
+    pipeline) cat fuzz/dict/*.dict > "$seeds/pipeline.dict"; dict=(-dict="$seeds/pipeline.dict") ;;
+  esac
+  budget="${seconds} s"; [ "$runs" -ge 0 ] && budget="$runs runs"
+  echo "fuzz.sh: $target for $budget ($(ls "$seeds/$target" | wc -l) seeds)"
+  log="$build_dir/fuzz_$target.log"
+  if ! "$build_dir/fuzz/fuzz_$target" "$corpus" "$seeds/$target" "${dict[@]}" \
+        -max_total_time="$seconds" -runs="$runs" -timeout=10 -rss_limit_mb=2048 -max_len="$max_len" \
+        -print_final_stats=1 \
+        -artifact_prefix="$findings/$target/" > "$log" 2>&1; then
+    echo "fuzz.sh: FINDING in $target: see $log and $findings/$target/"
+    tail -40 "$log"
+    status=1
+  fi
+  grep -E "^stat::|DONE|cov: " "$log" | tail -7 || true
+done
+exit $status
