@@ -8,6 +8,8 @@
 #include "subdiv/refine/refine.h"
 #include "subdiv/refine/hierarchy.h"
 
+#include <algorithm>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -464,6 +466,34 @@ void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, cons
 
 // Everything check_refinable() promises, returning the coarse mesh's
 // topology so that refinement does not build it a second time.
+/// Two triangles on the same three vertices (a doubled triangle, as in a
+/// closed mesh of two faces) are a valid surface, but the triangle, sqrt3 and
+/// quasi 4-8 splits join their children by two edges between the same pair of new
+/// vertices, which a mesh indexed by vertices cannot hold: the refined mesh
+/// would be non-manifold. Such a pair shares two of its edges.
+void check_no_doubled_triangles(const PolygonMesh& mesh, const MeshTopology& topology, const Scheme& scheme,
+                                const SourceLines* lines) {
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.face_size(f) != 3) continue;
+    Index across[3];
+    for (Index i = 0; i < 3; ++i) {
+      const Index c = topology.corner_across(topology.face_first_corner(f) + i);
+      across[i] = c == kInvalidIndex ? kInvalidIndex : topology.corner_face(c);
+    }
+    for (Index i = 0; i < 3; ++i) {
+      const Index g = across[i];
+      if (g == kInvalidIndex || g == f || mesh.face_size(g) != 3 || (across[(i + 1) % 3] != g && across[(i + 2) % 3] != g))
+        continue;
+      throw InvalidInputError(where(lines, &SourceLines::face_lines, static_cast<std::size_t>(std::max(f, g))) +
+                              std::string(scheme.name) + ": faces " + std::to_string(std::min(f, g)) + " and " +
+                              std::to_string(std::max(f, g)) + " are triangles on the same three vertices; the " +
+                              to_string(scheme.split) +
+                              " would join their children by two edges between the same vertices "
+                              "(a quad scheme such as catmull-clark refines this mesh)");
+    }
+  }
+}
+
 MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                               const SourceLines* lines) {
   if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
@@ -526,6 +556,8 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
                                 " has " + std::to_string(mesh.face_size(f)) + " vertices (" + remedy + ")");
   };
   if (scheme.traits.needs_triangles) require_faces_of(3, "triangle", "triangulate it first: triangulate()");
+  if (scheme.split == SplitRule::triangle || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::quasi_4_8)
+    check_no_doubled_triangles(mesh, topology, scheme, lines);
   if (scheme.traits.needs_quads) require_faces_of(4, "quad", "one bilinear or catmull-clark level first makes every face a quad");
   return topology;
 }

@@ -244,5 +244,31 @@ TEST(Refine, RejectsWhatItCannotRefine) {
   EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), levels(-1)), InvalidInputError);
 }
 
+TEST(Refine, RefusesDoubledTrianglesWhereTheSplitCannotIndexTheResult) {
+  // Found by fuzz_pipeline: two triangles on the same three vertices (a
+  // closed mesh of two faces) are valid, but the triangle, sqrt3 and quasi
+  // 4-8 splits made non-manifold meshes of them without a word.
+  const PolygonMesh pillow = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{1, 0, 2}, {0, 1, 2}});
+  ASSERT_TRUE(validate(pillow).ok());
+  for (const char* name : {"loop", "linear", "modified-butterfly", "sqrt3", "interpolatory-sqrt3", "quasi-4-8"}) {
+    SCOPED_TRACE(name);
+    try {
+      refine(pillow, scheme(name));
+      FAIL();
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find("faces 0 and 1 are triangles on the same three vertices"), std::string::npos)
+          << e.what();
+    }
+  }
+  // The splits that add a point per face keep them apart: a valid result.
+  for (const char* name : {"catmull-clark", "doo-sabin", "four-eight"}) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(validate(refine(pillow, scheme(name), levels(2))).ok());
+  }
+  // Two triangles sharing one edge, or two of three vertices, are ordinary.
+  const PolygonMesh pair = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {2, 1, 3}});
+  EXPECT_TRUE(validate(refine(pair, scheme("loop"), levels(2))).ok());
+}
+
 }  // namespace
 }  // namespace subdiv
