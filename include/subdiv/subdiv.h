@@ -1,6 +1,7 @@
 #pragma once
 // Everything subdiv offers, one header per module.
 
+#include "subdiv/version.h"
 #include "subdiv/core.h"
 #include "subdiv/mesh.h"
 #include "subdiv/io.h"

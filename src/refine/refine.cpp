@@ -466,11 +466,12 @@ void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, cons
 
 // Everything check_refinable() promises, returning the coarse mesh's
 // topology so that refinement does not build it a second time.
-/// Two triangles on the same three vertices (a doubled triangle, as in a
-/// closed mesh of two faces) are a valid surface, but the triangle, sqrt3 and
-/// quasi 4-8 splits join their children by two edges between the same pair of new
-/// vertices, which a mesh indexed by vertices cannot hold: the refined mesh
-/// would be non-manifold. Such a pair shares two of its edges.
+/// Two triangles on the same three vertices (a doubled triangle, around an
+/// interior vertex of valence 2) are a valid surface, but the triangle, sqrt3
+/// and quasi 4-8 splits join their children by two edges between the same
+/// pair of new vertices, which a mesh indexed by vertices holds as one
+/// non-manifold edge. Refused unless the caller allows non-manifold input,
+/// which refines those edges as sharp. Such a pair shares two of its edges.
 void check_no_doubled_triangles(const PolygonMesh& mesh, const MeshTopology& topology, const Scheme& scheme,
                                 const SourceLines* lines) {
   for (Index f = 0; f < mesh.face_count(); ++f) {
@@ -488,8 +489,9 @@ void check_no_doubled_triangles(const PolygonMesh& mesh, const MeshTopology& top
                               std::string(scheme.name) + ": faces " + std::to_string(std::min(f, g)) + " and " +
                               std::to_string(std::max(f, g)) + " are triangles on the same three vertices; the " +
                               to_string(scheme.split) +
-                              " would join their children by two edges between the same vertices "
-                              "(a quad scheme such as catmull-clark refines this mesh)");
+                              " would join their children by two edges between the same vertices, a non-manifold "
+                              "edge (RuleOptions::allow_non_manifold refines it as a sharp feature; a quad scheme "
+                              "such as catmull-clark refines the mesh as it is)");
     }
   }
 }
@@ -556,7 +558,9 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
                                 " has " + std::to_string(mesh.face_size(f)) + " vertices (" + remedy + ")");
   };
   if (scheme.traits.needs_triangles) require_faces_of(3, "triangle", "triangulate it first: triangulate()");
-  if (scheme.split == SplitRule::triangle || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::quasi_4_8)
+  const bool splits_faces_by_edge_points =
+      scheme.split == SplitRule::triangle || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::quasi_4_8;
+  if (splits_faces_by_edge_points && !options.allow_non_manifold)
     check_no_doubled_triangles(mesh, topology, scheme, lines);
   if (scheme.traits.needs_quads) require_faces_of(4, "quad", "one bilinear or catmull-clark level first makes every face a quad");
   return topology;

@@ -45,7 +45,7 @@ stderr_one_line() {
 run help 0 --help && stdout_has help "subdiv info data/meshes/cube.obj"
 run info-help 0 info --help && stdout_has info-help "Example:"
 run convert-help 0 convert --help && stdout_has convert-help "Example:"
-run version 0 --version && stdout_has version "subdiv 0.1.0"
+run version 0 --version && stdout_has version "subdiv $(sed -n 's/^project(subdiv VERSION \([0-9.]*\).*/\1/p' "$project_dir/CMakeLists.txt")"
 
 run info-cube 0 info "$meshes/cube.obj"
 stdout_has info-cube "vertices        8"

@@ -243,15 +243,17 @@ TEST(GridTriangles, DeclinesWhatItDoesNotCover) {
   EXPECT_TRUE(takes_grids(triangulated_torus(6), loop_scheme(), 3));
   EXPECT_FALSE(takes_grids(triangulated_torus(6), loop_scheme(), 2));  // too few levels to repay the grids
   // Two faces on the same three vertices: the split's numbering merges
-  // their children's edges, which the generic construction handles.
+  // their children's edges (a non-manifold edge, so refined only when
+  // allowed), which the generic construction handles.
   PolygonMesh closed_pillow;
   closed_pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   closed_pillow.add_face({0, 1, 2});
   closed_pillow.add_face({0, 2, 1});
-  EXPECT_FALSE(detail::refine_triangles_as_grids(closed_pillow, MeshTopology(closed_pillow), loop_scheme(),
-                                                 with_grids(true, 3), 3));
-  EXPECT_EQ(refine(closed_pillow, loop_scheme(), with_grids(true, 3)).face_indices,
-            refine(closed_pillow, loop_scheme(), with_grids(false, 3)).face_indices);
+  RefineOptions grids = with_grids(true, 3), masks = with_grids(false, 3);
+  grids.allow_non_manifold = masks.allow_non_manifold = true;
+  EXPECT_FALSE(detail::refine_triangles_as_grids(closed_pillow, MeshTopology(closed_pillow), loop_scheme(), grids, 3));
+  EXPECT_EQ(refine(closed_pillow, loop_scheme(), grids).face_indices,
+            refine(closed_pillow, loop_scheme(), masks).face_indices);
   // Quads are not its faces; piecewise-smooth rules are the masks'.
   EXPECT_FALSE(takes_grids(torus(6), loop_scheme(), 3));
   const PolygonMesh torus6 = triangulated_torus(6);

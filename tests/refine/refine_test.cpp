@@ -247,7 +247,8 @@ TEST(Refine, RejectsWhatItCannotRefine) {
 TEST(Refine, RefusesDoubledTrianglesWhereTheSplitCannotIndexTheResult) {
   // Found by fuzz_pipeline: two triangles on the same three vertices (a
   // closed mesh of two faces) are valid, but the triangle, sqrt3 and quasi
-  // 4-8 splits made non-manifold meshes of them without a word.
+  // 4-8 splits made non-manifold meshes of them without a word; they refuse
+  // them unless non-manifold input is allowed.
   const PolygonMesh pillow = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{1, 0, 2}, {0, 1, 2}});
   ASSERT_TRUE(validate(pillow).ok());
   for (const char* name : {"loop", "linear", "modified-butterfly", "sqrt3", "interpolatory-sqrt3", "quasi-4-8"}) {
@@ -265,6 +266,10 @@ TEST(Refine, RefusesDoubledTrianglesWhereTheSplitCannotIndexTheResult) {
     SCOPED_TRACE(name);
     EXPECT_TRUE(validate(refine(pillow, scheme(name), levels(2))).ok());
   }
+  // Allowed non-manifold input, the doubled edges are refined as sharp ones.
+  RefineOptions allow;
+  allow.allow_non_manifold = true;
+  EXPECT_NO_THROW(refine(pillow, scheme("loop"), allow));
   // Two triangles sharing one edge, or two of three vertices, are ordinary.
   const PolygonMesh pair = make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {2, 1, 3}});
   EXPECT_TRUE(validate(refine(pair, scheme("loop"), levels(2))).ok());

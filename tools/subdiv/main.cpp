@@ -10,6 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "subdiv/version.h"
+
 #include "cli_terms.h"
 #include "commands.h"
 #include "output_checks.h"
@@ -32,7 +34,7 @@ void print_error(const std::string& message) { std::fprintf(stderr, "subdiv: %s\
 int main(int argc, char** argv) {
   using namespace subdiv::cli;
   CLI::App app{"subdiv: subdivision surfaces on polygon meshes", "subdiv"};
-  app.set_version_flag("--version", std::string("subdiv 0.1.0"));
+  app.set_version_flag("--version", std::string("subdiv ") + subdiv::version());
   app.require_subcommand(1);
   bool quiet_flag = false;
   app.add_flag("-q,--quiet", quiet_flag, "Print errors only: no warnings, no progress lines (any command)");

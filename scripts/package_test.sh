@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# The package as users get it (CI runs this after scripts/test.sh, which
+# leaves the static release build in build/):
+#   1. `cmake --install build` into a temporary prefix, then the examples
+#      configured and built as an outside project with find_package(subdiv)
+#      only, and run; and one example built by hand with pkg-config.
+#   2. A project that embeds subdiv with add_subdirectory, as a shared library
+#      (BUILD_SHARED_LIBS): it must get the library alone and keep its build
+#      type; the shared library must export nothing of TBB or {fmt}; then the
+#      same install and outside build against it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source_dir="$PWD"
+
+if [ ! -f build/CMakeCache.txt ]; then
+  echo "package_test.sh: build/ is missing: run scripts/test.sh (or scripts/build.sh) first" >&2
+  exit 2
+fi
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+generator=()
+if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
+
+fail() { echo "package_test.sh: FAILED: $*" >&2; exit 1; }
+
+# Runs the examples built in $1 and checks what they print.
+run_examples() {
+  local dir="$1" out
+  out="$("$dir/inspect_mesh" data/meshes/cube.obj)"
+  [[ "$out" == "8 vertices, 6 faces, 12 edges; 0 errors, 0 warnings"* ]] || fail "inspect_mesh printed: $out"
+  out="$("$dir/refine_mesh" data/meshes/l_shape.obj catmull-clark 2 "$work/l_shape2.obj")"
+  [[ "$out" == *"faces -> "*" faces (catmull-clark, 2 levels), 0 creases and 1 corners tagged" ]] ||
+    fail "refine_mesh printed: $out"
+  [ -s "$work/l_shape2.obj" ] || fail "refine_mesh wrote no file"
+  # A typed error thrown inside the library is caught by the example's
+  # handler (type information across the library boundary).
+  if out="$("$dir/refine_mesh" "$work/missing.obj" loop 1 "$work/x.obj" 2>&1)"; then fail "a missing file succeeded"; fi
+  [[ "$out" == "refine_mesh: "*"missing.obj"* ]] || fail "refine_mesh reported a missing file as: $out"
+}
+
+# Configures and builds examples/ against the prefix $1 into $2, then runs them.
+outside_build() {
+  cmake -S examples -B "$2" "${generator[@]}" -DCMAKE_PREFIX_PATH="$1" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  grep -q "subdiv_DIR:PATH=$1/" "$2/CMakeCache.txt" || fail "the examples did not find subdiv in $1"
+  cmake --build "$2" >/dev/null
+  run_examples "$2"
+}
+
+echo "package_test.sh: static library, installed"
+cmake --install build --prefix "$work/static" >/dev/null
+for f in include/subdiv/subdiv.h include/subdiv/version.h lib/libsubdiv.a lib/cmake/subdiv/subdivConfig.cmake \
+         lib/cmake/subdiv/subdivConfigVersion.cmake lib/pkgconfig/subdiv.pc bin/subdiv share/doc/subdiv/LICENSE \
+         share/doc/subdiv/refinement.md; do
+  [ -e "$work/static/$f" ] || fail "the install has no $f"
+done
+version="$(sed -n 's/^project(subdiv VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)"
+[ "$("$work/static/bin/subdiv" --version)" = "subdiv $version" ] || fail "subdiv --version is not $version"
+outside_build "$work/static" "$work/examples-static"
+# pkg-config, static: the private requirements (TBB, {fmt}) join the link.
+PKG_CONFIG_PATH="$work/static/lib/pkgconfig" c++ examples/refine_mesh.cpp -o "$work/refine_mesh_pc" \
+  $(PKG_CONFIG_PATH="$work/static/lib/pkgconfig" pkg-config --cflags --libs --static subdiv)
+"$work/refine_mesh_pc" data/meshes/cube.obj loop 1 "$work/cube_pc.obj" >/dev/null 2>&1 &&
+  fail "loop refined a quad cube" || true
+"$work/refine_mesh_pc" data/meshes/tetrahedron.obj loop 1 "$work/tet_pc.obj" | grep -q "4 faces -> 16 faces" ||
+  fail "the pkg-config build did not refine"
+
+echo "package_test.sh: shared library, embedded with add_subdirectory"
+# -O0: this build checks packaging, not speed, and compiles fastest.
+cmake -S tests/package/embed -B "$work/embed" "${generator[@]}" -DSUBDIV_SOURCE_DIR="$source_dir" \
+  -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DBUILD_SHARED_LIBS=ON -DSUBDIV_INSTALL=ON >/dev/null
+for dependency in CLI11 GTest benchmark nlohmann_json; do
+  if grep -q "^${dependency}_DIR:PATH=/" "$work/embed/CMakeCache.txt"; then
+    fail "embedding subdiv looked for $dependency, which only its program, tests or benchmarks need"
+  fi
+done
+cmake --build "$work/embed" --parallel "$(nproc)" >/dev/null
+library="$(find "$work/embed" -name 'libsubdiv.so.*' -type f | head -1)"
+[ -n "$library" ] || fail "no libsubdiv.so was built"
+# Mangled names: _ZN3tbb, _ZN3fmt, _ZNSt... are those namespaces' functions,
+# whatever type they return.
+leaked="$(nm -D --defined-only "$library" | awk '{print $3}' | grep -cE '^_Z(N|NK|TI|TS|TV)?(3tbb|3fmt|St|NSt)' || true)"
+[ "$leaked" = 0 ] || fail "libsubdiv.so exports $leaked symbols of TBB, {fmt} or std"
+nm -DC --defined-only "$library" | grep -q ' subdiv::refine(' || fail "libsubdiv.so does not export subdiv::refine"
+"$work/embed/embedded_refine_mesh" data/meshes/tetrahedron.obj loop 2 "$work/tet2.obj" | grep -q "4 faces -> 64 faces" ||
+  fail "the embedding project's program did not refine"
+cmake --install "$work/embed" --prefix "$work/shared" >/dev/null
+[ -e "$work/shared/lib/libsubdiv.so" ] || fail "the shared install has no lib/libsubdiv.so"
+outside_build "$work/shared" "$work/examples-shared"
+ldd "$work/examples-shared/refine_mesh" | grep -q "$work/shared/lib/libsubdiv.so" ||
+  fail "the outside build did not link the installed libsubdiv.so"
+echo "package_test.sh: passed"
