@@ -36,6 +36,16 @@ run_examples() {
   # handler (type information across the library boundary).
   if out="$("$dir/refine_mesh" "$work/missing.obj" loop 1 "$work/x.obj" 2>&1)"; then fail "a missing file succeeded"; fi
   [[ "$out" == "refine_mesh: "*"missing.obj"* ]] || fail "refine_mesh reported a missing file as: $out"
+  # The table re-evaluates three poses; the example itself fails if refining
+  # again differs by more than 1e-12.
+  out="$("$dir/animate_with_stencils" data/meshes/spot_control_mesh.obj catmull-clark 2)"
+  [ "$(grep -c "^frame [123]: largest difference" <<< "$out")" = 3 ] || fail "animate_with_stencils printed: $out"
+  # Loop's limit of a tetrahedron's vertex (1,1,1): valence 3, beta = 3/16,
+  # chi = 1/(3/(8 beta) + 3) = 1/5, so 2/5 (1,1,1) + 1/5 of its three
+  # neighbours' sum (-1,-1,-1) = (0.2, 0.2, 0.2), normal along (1,1,1).
+  out="$("$dir/limit_points" data/meshes/tetrahedron.obj loop)"
+  [[ "$out" == "vertex 0: limit (0.200000, 0.200000, 0.200000), normal (0.577350, 0.577350, 0.577350), closed form"* ]] ||
+    fail "limit_points printed: $out"
 }
 
 # Configures and builds examples/ against the prefix $1 into $2, then runs them.
@@ -61,8 +71,8 @@ PKG_CONFIG_PATH="$work/static/lib/pkgconfig" c++ examples/refine_mesh.cpp -o "$w
   $(PKG_CONFIG_PATH="$work/static/lib/pkgconfig" pkg-config --cflags --libs --static subdiv)
 "$work/refine_mesh_pc" data/meshes/cube.obj loop 1 "$work/cube_pc.obj" >/dev/null 2>&1 &&
   fail "loop refined a quad cube" || true
-"$work/refine_mesh_pc" data/meshes/tetrahedron.obj loop 1 "$work/tet_pc.obj" | grep -q "4 faces -> 16 faces" ||
-  fail "the pkg-config build did not refine"
+out="$("$work/refine_mesh_pc" data/meshes/tetrahedron.obj loop 1 "$work/tet_pc.obj")"
+[[ "$out" == *"4 faces -> 16 faces"* ]] || fail "the pkg-config build did not refine: $out"
 
 echo "package_test.sh: shared library, embedded with add_subdirectory"
 # -O0: this build checks packaging, not speed, and compiles fastest.
@@ -74,18 +84,22 @@ for dependency in CLI11 GTest benchmark nlohmann_json; do
   fi
 done
 cmake --build "$work/embed" --parallel "$(nproc)" >/dev/null
-library="$(find "$work/embed" -name 'libsubdiv.so.*' -type f | head -1)"
+library="$(find "$work/embed" -name 'libsubdiv.so.*' -type f -print -quit)"
 [ -n "$library" ] || fail "no libsubdiv.so was built"
 # Mangled names: _ZN3tbb, _ZN3fmt, _ZNSt... are those namespaces' functions,
 # whatever type they return.
 leaked="$(nm -D --defined-only "$library" | awk '{print $3}' | grep -cE '^_Z(N|NK|TI|TS|TV)?(3tbb|3fmt|St|NSt)' || true)"
 [ "$leaked" = 0 ] || fail "libsubdiv.so exports $leaked symbols of TBB, {fmt} or std"
-nm -DC --defined-only "$library" | grep -q ' subdiv::refine(' || fail "libsubdiv.so does not export subdiv::refine"
-"$work/embed/embedded_refine_mesh" data/meshes/tetrahedron.obj loop 2 "$work/tet2.obj" | grep -q "4 faces -> 64 faces" ||
-  fail "the embedding project's program did not refine"
+# The symbol tables are captured before matching: `nm | grep -q` fails under
+# pipefail whenever grep exits before nm has written everything (SIGPIPE).
+exported="$(nm -DC --defined-only "$library")"
+[[ "$exported" == *" subdiv::refine("* ]] || fail "libsubdiv.so does not export subdiv::refine"
+out="$("$work/embed/embedded_refine_mesh" data/meshes/tetrahedron.obj loop 2 "$work/tet2.obj")"
+[[ "$out" == *"4 faces -> 64 faces"* ]] || fail "the embedding project's program did not refine: $out"
 cmake --install "$work/embed" --prefix "$work/shared" >/dev/null
 [ -e "$work/shared/lib/libsubdiv.so" ] || fail "the shared install has no lib/libsubdiv.so"
 outside_build "$work/shared" "$work/examples-shared"
-ldd "$work/examples-shared/refine_mesh" | grep -q "$work/shared/lib/libsubdiv.so" ||
+linked="$(ldd "$work/examples-shared/refine_mesh")"
+[[ "$linked" == *"$work/shared/lib/libsubdiv.so"* ]] ||
   fail "the outside build did not link the installed libsubdiv.so"
 echo "package_test.sh: passed"
