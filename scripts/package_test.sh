@@ -46,6 +46,21 @@ run_examples() {
   out="$("$dir/limit_points" data/meshes/tetrahedron.obj loop)"
   [[ "$out" == "vertex 0: limit (0.200000, 0.200000, 0.200000), normal (0.577350, 0.577350, 0.577350), closed form"* ]] ||
     fail "limit_points printed: $out"
+  # Loop at an interior vertex of valence 5: beta = (5/8 - (3/8 + cos(72 deg)/4)^2) / 5
+  # = 0.0840932..., each neighbour's limit weight 1/(3/(8 beta) + 5) = 0.1057156...
+  # The document must parse as JSON.
+  out="$("$dir/analyze_scheme" loop 5)"
+  python3 -c 'import json, sys; d = json.loads(sys.argv[1]); assert d["verdict"] == "C1", d["verdict"];
+assert abs(d["limit_mask"][1] - 0.1057156546251194) < 1e-12, d["limit_mask"]' "$out" ||
+    fail "analyze_scheme printed: $out"
+  # The example itself fails when refining to the a priori depth is not within eps.
+  out="$("$dir/depth_and_adaptive" data/meshes/tetrahedron.obj loop 0.001)" || fail "depth_and_adaptive: $out"
+  [[ "$out" == *"within eps"*"adaptive: "*" faces"* ]] || fail "depth_and_adaptive printed: $out"
+  # The four-point scheme interpolates the square's corners and puts each
+  # edge's new point at (1/2 + 1/16) * 2 + 1/16 * 2 = 1.25 from the centre.
+  out="$("$dir/refine_curve" four-point 1)"
+  [[ "$out" == *"point 0: (1.000000, 1.000000, 0.000000)"*"point 1: (0.000000, 1.250000, 0.000000)"* ]] ||
+    fail "refine_curve printed: $out"
 }
 
 # Configures and builds examples/ against the prefix $1 into $2, then runs them.
@@ -66,6 +81,16 @@ done
 version="$(sed -n 's/^project(subdiv VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)"
 [ "$("$work/static/bin/subdiv" --version)" = "subdiv $version" ] || fail "subdiv --version is not $version"
 outside_build "$work/static" "$work/examples-static"
+# The Python module, where the build has it: imported from the install alone.
+if grep -q "^SUBDIV_BUILD_PYTHON:BOOL=ON" build/CMakeCache.txt; then
+  python_dir="$(sed -n 's/^SUBDIV_PYTHON_INSTALL_DIR:STRING=//p' build/CMakeCache.txt)"
+  [ -f "$work/static/$python_dir/subdiv/__init__.py" ] || fail "the install has no Python package in $python_dir"
+  out="$(cd "$work" && PYTHONPATH="$work/static/$python_dir" /usr/bin/python3 -c '
+import subdiv
+mesh = subdiv.read("'"$source_dir"'/data/meshes/tetrahedron.obj")
+print(subdiv.__version__, subdiv.refine(mesh, "loop", 2).mesh.face_count, subdiv.__file__)')"
+  [[ "$out" == "$version 64 $work/static/"* ]] || fail "the installed Python module printed: $out"
+fi
 # pkg-config, static: the private requirements (TBB, {fmt}) join the link.
 PKG_CONFIG_PATH="$work/static/lib/pkgconfig" c++ examples/refine_mesh.cpp -o "$work/refine_mesh_pc" \
   $(PKG_CONFIG_PATH="$work/static/lib/pkgconfig" pkg-config --cflags --libs --static subdiv)

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages subdiv needs to build, test and benchmark.
 # Idempotent: when everything is present it only runs dpkg-query and exits.
-# Usage: scripts/setup.sh [--fuzz]   (--fuzz: also clang and libFuzzer, for scripts/fuzz.sh)
+# Usage: scripts/setup.sh [--fuzz] [--docs]
+#   --fuzz: also clang and libFuzzer, for scripts/fuzz.sh
+#   --docs: also doxygen, for scripts/docs.sh (the API reference)
 set -euo pipefail
 
 packages=(
@@ -11,11 +13,16 @@ packages=(
   nlohmann-json3-dev libcairo2-dev libfontconfig-dev  # subdiv analyze: --json output, plots
   libassimp-dev libosd-dev  # peers in bench/ (Assimp import, OpenSubdiv topology)
   python3  # the CLI test reads the --json documents
+  python3-dev pybind11-dev python3-numpy python3-scipy python3-pytest  # the Python module and its tests
 )
 
-if [ "${1:-}" = "--fuzz" ]; then
-  packages+=(clang-14 libclang-rt-14-dev)
-fi
+for option in "$@"; do
+  case "$option" in
+    --fuzz) packages+=(clang-14 libclang-rt-14-dev) ;;
+    --docs) packages+=(doxygen) ;;
+    *) echo "setup: unknown option $option (--fuzz, --docs)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,5 +1,6 @@
 #pragma once
-// subdiv's analysis module: subdivision matrices, eigen-analysis, smoothness verdicts and limit positions.
+/// \file
+/// subdiv's analysis module: subdivision matrices, eigen-analysis, smoothness verdicts and limit positions.
 
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/characteristic_map.h"

@@ -1,5 +1,6 @@
 #pragma once
-// subdiv's core module: errors, basic types and stencil tables.
+/// \file
+/// subdiv's core module: errors, basic types and stencil tables.
 
 #include "subdiv/core/error.h"
 #include "subdiv/core/stencil_table.h"

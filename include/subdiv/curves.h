@@ -1,4 +1,5 @@
 #pragma once
-// subdiv's curves module: curve schemes and the refinement of polylines.
+/// \file
+/// subdiv's curves module: curve schemes and the refinement of polylines.
 
 #include "subdiv/curves/curve_scheme.h"

@@ -1,5 +1,6 @@
 #pragma once
-// subdiv's depth module: a-priori subdivision depth and adaptive refinement.
+/// \file
+/// subdiv's depth module: a-priori subdivision depth and adaptive refinement.
 
 #include "subdiv/depth/adaptive.h"
 #include "subdiv/depth/depth.h"

@@ -1,5 +1,6 @@
 #pragma once
-// subdiv's io module: reading and writing OBJ, PLY and OFF files.
+/// \file
+/// subdiv's io module: reading and writing OBJ, PLY and OFF files.
 
 #include "subdiv/io/file_io.h"
 #include "subdiv/io/mesh_io.h"

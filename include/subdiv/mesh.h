@@ -1,5 +1,6 @@
 #pragma once
-// subdiv's mesh module: polygon meshes, their tags, topology, validation and statistics.
+/// \file
+/// subdiv's mesh module: polygon meshes, their tags, topology, validation and statistics.
 
 #include "subdiv/mesh/mesh_stats.h"
 #include "subdiv/mesh/polygon_mesh.h"

@@ -1,7 +1,8 @@
 #pragma once
-// subdiv's refine module: uniform refinement, the level hierarchy, its
-// stencil tables, and the local subdivision matrix of a configuration (the
-// stencils restricted to its neighbourhood).
+/// \file
+/// subdiv's refine module: uniform refinement, the level hierarchy, its
+/// stencil tables, and the local subdivision matrix of a configuration (the
+/// stencils restricted to its neighbourhood).
 
 #include "subdiv/refine/configuration.h"
 #include "subdiv/refine/creasing.h"

@@ -1,5 +1,6 @@
 #pragma once
-// subdiv's rules module: the surface schemes: their declarations, masks and registry.
+/// \file
+/// subdiv's rules module: the surface schemes: their declarations, masks and registry.
 
 #include "subdiv/rules/bilinear.h"
 #include "subdiv/rules/butterfly.h"

@@ -1,5 +1,6 @@
 #pragma once
-// Everything subdiv offers, one header per module.
+/// \file
+/// Everything subdiv offers, one header per module.
 
 #include "subdiv/version.h"
 #include "subdiv/core.h"

@@ -8,7 +8,7 @@
 
 namespace subdiv {
 
-const char* to_string(SmoothnessVerdict v) {
+const char* to_string(SmoothnessVerdict v) noexcept {
   switch (v) {
     case SmoothnessVerdict::c1: return "C1";
     case SmoothnessVerdict::not_c1: return "not C1";
@@ -18,7 +18,7 @@ const char* to_string(SmoothnessVerdict v) {
   return "?";
 }
 
-const char* to_string(CurvatureBehaviour c) {
+const char* to_string(CurvatureBehaviour c) noexcept {
   switch (c) {
     case CurvatureBehaviour::zero: return "zero curvature";
     case CurvatureBehaviour::bounded: return "bounded curvature";

@@ -12,28 +12,29 @@
 
 namespace subdiv {
 
-std::complex<double> gcc_mu0(const SmoothingWeights& w, int m) {
+std::complex<double> gcc_mu0(const SmoothingWeights& w, int m) noexcept {
   const auto [a, b] = w.at(m);
   const auto [a4, b4] = w.at(4);
   const double t = 2.0 * a4 + b4, s = 3.0 * a + b;
   return (s + std::sqrt(std::complex<double>(s * s - 4.0 * t * a, 0.0))) / 8.0;
 }
 
-double gcc_lambda(const SmoothingWeights& w, int m) {
+double gcc_lambda(const SmoothingWeights& w, int m) noexcept {
   const auto [a4, b4] = w.at(4);
   const double t = 2.0 * a4 + b4, c = std::cos(2.0 * std::numbers::pi / m), u = 2.0 - t;
   return (4.0 + t + u * c + std::sqrt(u * u * c * c + 2.0 * (4.0 + t) * u * c + (4.0 - t) * (4.0 - t))) / 16.0;
 }
 
-double gcc_rho_b_bound(int degree) { return std::pow(0.5, degree / 2 + 1); }
-double gcc_rho_a_bound(int degree) { return std::pow(0.25, degree / 2 + 1); }
+double gcc_rho_b_bound(int degree) noexcept { return std::pow(0.5, degree / 2 + 1); }
+double gcc_rho_a_bound(int degree) noexcept { return std::pow(0.25, degree / 2 + 1); }
 
 GccTheorem gcc_theorem(const Scheme& scheme, int m) {
-  if (!scheme.steps || std::get<DegreeParameters>(scheme.parameters).degree != 3 || std::get<DegreeParameters>(scheme.parameters).smoothing.size() != 1)
+  const DegreeParameters* degree = degree_parameters(scheme.parameters);
+  if (!scheme.steps || degree == nullptr || degree->degree != 3 || degree->smoothing.size() != 1)
     throw InvalidInputError(std::string(scheme.name) +
                             ": the closed forms of Example 6.2 are those of M_3-bar (degree 3, one smoothing operator)");
   if (m < 3) throw InvalidInputError("closed forms: valence must be >= 3, not " + std::to_string(m));
-  const SmoothingWeights& w = std::get<DegreeParameters>(scheme.parameters).smoothing.front();
+  const SmoothingWeights& w = degree->smoothing.front();
   GccTheorem r;
   r.valence = m;
   r.mu0 = gcc_mu0(w, m);
@@ -59,7 +60,7 @@ GccTheorem gcc_theorem(const Scheme& scheme, int m) {
   return r;
 }
 
-double gcc_second_difference_bound(const SmoothingWeights& w) {
+double gcc_second_difference_bound(const SmoothingWeights& w) noexcept {
   const auto [a, b] = w.at(4);
   const double s = (2.0 * a + b) / 4.0;
   return std::max(s, 0.5 - s);
@@ -106,8 +107,10 @@ double scheme_norm(const Mask& q) {
 double regular_second_difference_norm(const Scheme& scheme) {
   if (scheme.split != SplitRule::quad && scheme.split != SplitRule::dual)
     throw InvalidInputError(std::string(scheme.name) + ": second differences need a quad mesh scheme");
-  // A regular grid wide enough that its centre's rows do not see the boundary.
-  const int reach = 2 * std::max(3, std::get<DegreeParameters>(scheme.parameters).degree) + 4, n = 2 * reach;
+  // A regular grid wide enough that its centre's rows do not see the boundary
+  // (schemes without a degree parameter are at most bicubic).
+  const DegreeParameters* degree = degree_parameters(scheme.parameters);
+  const int reach = 2 * std::max(3, degree != nullptr ? degree->degree : 3) + 4, n = 2 * reach;
   PolygonMesh grid;
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) grid.positions.push_back({double(i), double(j), 0.0});

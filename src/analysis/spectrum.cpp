@@ -548,11 +548,11 @@ std::optional<std::array<Eigen::VectorXd, 2>> real_pair(const Eigen::MatrixXd& S
 
 }  // namespace
 
-bool Spectrum::defective() const {
+bool Spectrum::defective() const noexcept {
   return std::any_of(values.begin(), values.end(), [](const Eigenvalue& e) { return e.defective(); });
 }
 
-int Spectrum::dimension() const {
+int Spectrum::dimension() const noexcept {
   int n = 0;
   for (const Eigenvalue& e : values) n += e.algebraic;
   return n;

@@ -2,6 +2,6 @@
 
 namespace subdiv {
 
-const char* version() { return SUBDIV_VERSION_STRING; }
+const char* version() noexcept { return SUBDIV_VERSION_STRING; }
 
 }  // namespace subdiv

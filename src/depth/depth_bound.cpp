@@ -20,7 +20,7 @@ constexpr int kMaxDepth = 64;
 
 }  // namespace
 
-double DepthBound::at(int level) const {
+double DepthBound::at(int level) const noexcept {
   if (level < start) return std::numeric_limits<double>::infinity();
   double worst = 0.0;
   for (const DepthTerm& term : terms)

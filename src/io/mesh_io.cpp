@@ -21,7 +21,7 @@ FileFormat format_from_path(const std::filesystem::path& path) {
                           "' (expected .obj, .ply or .off)");
 }
 
-const char* to_string(FileFormat f) {
+const char* to_string(FileFormat f) noexcept {
   switch (f) {
     case FileFormat::obj: return "OBJ";
     case FileFormat::ply: return "PLY";

@@ -12,13 +12,13 @@ Index PolygonMesh::add_face(std::span<const Index> vertices) {
   return face_count() - 1;
 }
 
-const VertexChannel* PolygonMesh::find_vertex_channel(const std::string& name) const {
+const VertexChannel* PolygonMesh::find_vertex_channel(const std::string& name) const noexcept {
   for (const auto& c : vertex_channels)
     if (c.name == name) return &c;
   return nullptr;
 }
 
-const FaceVaryingChannel* PolygonMesh::find_face_varying_channel(const std::string& name) const {
+const FaceVaryingChannel* PolygonMesh::find_face_varying_channel(const std::string& name) const noexcept {
   for (const auto& c : face_varying_channels)
     if (c.name == name) return &c;
   return nullptr;

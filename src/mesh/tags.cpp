@@ -2,7 +2,7 @@
 
 namespace subdiv {
 
-const char* to_string(BoundaryInterpolation b) {
+const char* to_string(BoundaryInterpolation b) noexcept {
   switch (b) {
     case BoundaryInterpolation::none: return "none";
     case BoundaryInterpolation::edge_only: return "edge-only";
@@ -11,7 +11,7 @@ const char* to_string(BoundaryInterpolation b) {
   return "?";
 }
 
-const char* to_string(FaceVaryingInterpolation f) {
+const char* to_string(FaceVaryingInterpolation f) noexcept {
   switch (f) {
     case FaceVaryingInterpolation::none: return "none";
     case FaceVaryingInterpolation::corners_only: return "corners-only";
@@ -23,11 +23,11 @@ const char* to_string(FaceVaryingInterpolation f) {
   return "?";
 }
 
-const char* to_string(CreaseMethod c) {
+const char* to_string(CreaseMethod c) noexcept {
   return c == CreaseMethod::uniform ? "uniform" : "chaikin";
 }
 
-std::optional<CreaseMethod> crease_method_named(std::string_view name) {
+std::optional<CreaseMethod> crease_method_named(std::string_view name) noexcept {
   for (const CreaseMethod c : {CreaseMethod::uniform, CreaseMethod::chaikin})
     if (name == to_string(c)) return c;
   return std::nullopt;
@@ -37,11 +37,11 @@ std::vector<std::string> crease_method_names() {
   return {to_string(CreaseMethod::uniform), to_string(CreaseMethod::chaikin)};
 }
 
-const char* to_string(TriangleSubdivision t) {
+const char* to_string(TriangleSubdivision t) noexcept {
   return t == TriangleSubdivision::catmark ? "catmark" : "smooth";
 }
 
-const char* to_string(CornerType t) {
+const char* to_string(CornerType t) noexcept {
   switch (t) {
     case CornerType::unspecified: return "unspecified";
     case CornerType::convex: return "convex";

@@ -243,13 +243,13 @@ bool MeshTopology::order_ring(Index v, std::vector<Index>& ring_corners, std::ve
   return true;
 }
 
-bool MeshTopology::is_flipped_edge(Index e) const {
+bool MeshTopology::is_flipped_edge(Index e) const noexcept {
   const auto sides = edge_corners(e);
   if (sides.size() != 2) return false;
   return corner_vertex_[sides[0]] == corner_vertex_[sides[1]];
 }
 
-Index MeshTopology::find_edge(Index a, Index b) const {
+Index MeshTopology::find_edge(Index a, Index b) const noexcept {
   if (a < 0 || b < 0 || a >= vertex_count() || b >= vertex_count() || a == b) return kInvalidIndex;
   const std::array<Index, 2> key{std::min(a, b), std::max(a, b)};
   // Edges are numbered in (min, max) order, so a binary search finds them.

@@ -18,7 +18,7 @@
 
 namespace subdiv {
 
-bool MeshTopology::all_rings_ordered() const {
+bool MeshTopology::all_rings_ordered() const noexcept {
   for (Index v = 0; v < vertex_count(); ++v)
     if (!ring_ordered_[v] && vertex_kind_[v] != VertexKind::isolated) return false;
   return true;

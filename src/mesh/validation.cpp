@@ -8,7 +8,7 @@
 
 namespace subdiv {
 
-const char* to_string(IssueKind k) {
+const char* to_string(IssueKind k) noexcept {
   switch (k) {
     case IssueKind::index_out_of_range: return "index out of range";
     case IssueKind::face_too_small: return "face with fewer than 3 vertices";
@@ -24,18 +24,18 @@ const char* to_string(IssueKind k) {
   return "?";
 }
 
-Severity severity_of(IssueKind k) {
+Severity severity_of(IssueKind k) noexcept {
   return k == IssueKind::isolated_vertex ? Severity::warning : Severity::error;
 }
 
-std::size_t ValidationReport::error_count() const {
+std::size_t ValidationReport::error_count() const noexcept {
   std::size_t n = 0;
   for (int k = 0; k < kIssueKindCount; ++k)
     if (severity_of(static_cast<IssueKind>(k)) == Severity::error) n += counts[static_cast<std::size_t>(k)];
   return n;
 }
 
-std::size_t ValidationReport::warning_count() const {
+std::size_t ValidationReport::warning_count() const noexcept {
   std::size_t n = 0;
   for (int k = 0; k < kIssueKindCount; ++k)
     if (severity_of(static_cast<IssueKind>(k)) == Severity::warning) n += counts[static_cast<std::size_t>(k)];
@@ -45,6 +45,15 @@ std::size_t ValidationReport::warning_count() const {
 std::string ValidationReport::first_error(const std::string& path) const {
   for (const auto& issue : issues)
     if (issue.severity == Severity::error) return format_issue(issue, path);
+  // No error was listed (max_issues_per_kind = 0): name the first counted kind.
+  for (int k = 0; k < kIssueKindCount; ++k) {
+    const auto kind = static_cast<IssueKind>(k);
+    const std::size_t n = counts[static_cast<std::size_t>(k)];
+    if (severity_of(kind) == Severity::error && n > 0) {
+      const std::string what = std::to_string(n) + " x " + to_string(kind) + " (not listed)";
+      return path.empty() ? what : path + ": " + what;
+    }
+  }
   return {};
 }
 

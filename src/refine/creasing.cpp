@@ -10,7 +10,8 @@
 
 namespace subdiv {
 
-void subdivide_sharpness_around_vertex(CreaseMethod method, std::span<const double> parent, std::span<double> child) {
+void subdivide_sharpness_around_vertex(CreaseMethod method, std::span<const double> parent,
+                                       std::span<double> child) noexcept {
   const std::size_t n = parent.size();
   if (method == CreaseMethod::uniform || n < 2) {
     for (std::size_t i = 0; i < n; ++i) child[i] = subdivide_sharpness(parent[i]);
@@ -37,7 +38,7 @@ void subdivide_sharpness_around_vertex(CreaseMethod method, std::span<const doub
   }
 }
 
-VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) {
+VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) noexcept {
   if (vertex_sharpness > 0.0) return VertexRule::corner;
   switch (sharp_edge_count) {
     case 0: return VertexRule::smooth;

@@ -23,11 +23,11 @@
 
 namespace subdiv {
 
-BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RuleOptions& options) {
+BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept {
   return options.boundary.value_or(mesh.tags.boundary_interpolation);
 }
 
-CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& options) {
+CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept {
   return options.crease_method.value_or(mesh.tags.crease_method);
 }
 
@@ -675,8 +675,10 @@ StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme,
   return total ? std::move(*total) : StencilTable::identity(mesh.vertex_count());
 }
 
-const char* to_string(BoundaryRules r) { return r == BoundaryRules::standard ? "standard" : "piecewise-smooth"; }
-const char* to_string(CornerAngles a) { return a == CornerAngles::fixed ? "fixed" : "measured"; }
+const char* to_string(BoundaryRules r) noexcept {
+  return r == BoundaryRules::standard ? "standard" : "piecewise-smooth";
+}
+const char* to_string(CornerAngles a) noexcept { return a == CornerAngles::fixed ? "fixed" : "measured"; }
 
 StencilTable compose(const std::vector<StencilTable>& levels) {
   if (levels.empty()) return StencilTable();

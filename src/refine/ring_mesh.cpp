@@ -15,7 +15,7 @@
 
 namespace subdiv {
 
-double Configuration::sector_angle() const {
+double Configuration::sector_angle() const noexcept {
   switch (kind) {
     case Kind::interior: return 2.0 * std::numbers::pi;
     case Kind::boundary: return std::numbers::pi;
@@ -217,7 +217,7 @@ void dual_boundary_placement(const LevelView& level, Index edge, Index vertex, M
 
 }  // namespace
 
-const Scheme& layout_placement(SplitRule split);
+const Scheme& layout_placement(SplitRule split) noexcept;
 
 namespace {
 
@@ -336,7 +336,7 @@ std::vector<Vec3> sqrt2_child_layout(const RingMesh& ring, int levels) {
 
 }  // namespace
 
-const Scheme& layout_placement(SplitRule split) {
+const Scheme& layout_placement(SplitRule split) noexcept {
   static const Scheme sqrt2{.name = "sqrt2-placement",
                             .split = SplitRule::sqrt2,
                             .masks = {.face_point = centroid_placement, .vertex_point = kept_placement}};

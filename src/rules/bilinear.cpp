@@ -18,7 +18,7 @@ constexpr RegularGrid kRegularGrid{.even = {0.0, 1.0, 0.0}, .odd = {0.5, 0.5}};
 
 }  // namespace
 
-const Scheme& bilinear_scheme() {
+const Scheme& bilinear_scheme() noexcept {
   static const Scheme scheme{
       .name = "bilinear",
       .summary = "interpolating baseline, quad split: face centroids, edge midpoints",

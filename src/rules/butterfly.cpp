@@ -57,14 +57,14 @@
 
 namespace subdiv {
 
-double modified_butterfly_interior_weight(int k, int j) {
+double modified_butterfly_interior_weight(int k, int j) noexcept {
   if (k == 3) return j == 0 ? 5.0 / 12.0 : -1.0 / 12.0;
   if (k == 4) return j == 0 ? 3.0 / 8.0 : j == 2 ? -1.0 / 8.0 : 0.0;
   const double angle = 2.0 * std::numbers::pi * j / k;
   return (0.25 + std::cos(angle) + 0.5 * std::cos(2.0 * angle)) / k;
 }
 
-double modified_butterfly_crease_weight(int k, int i, int j) {
+double modified_butterfly_crease_weight(int k, int i, int j) noexcept {
   const double theta = std::numbers::pi / k;
   if (j == 0 || j == k) {
     const double c_i0 = 0.25 * std::cos(i * theta) - std::sin(2.0 * theta) * std::sin(2.0 * i * theta) /
@@ -75,7 +75,7 @@ double modified_butterfly_crease_weight(int k, int i, int j) {
           0.5 * std::sin(2.0 * i * theta) * std::sin(2.0 * j * theta)) / k;
 }
 
-double modified_butterfly_crease_centre_weight(int k, int i) {
+double modified_butterfly_crease_centre_weight(int k, int i) noexcept {
   const double theta = std::numbers::pi / k;
   return 1.0 - std::sin(theta) * std::sin(i * theta) / (k * (1.0 - std::cos(theta)));
 }
@@ -221,7 +221,7 @@ void interpolating_vertex_point(const LevelView&, Index v, VertexRule, MaskBuild
 
 }  // namespace
 
-const Scheme& butterfly_scheme() {
+const Scheme& butterfly_scheme() noexcept {
   static const Scheme scheme{
       .name = "butterfly",
       .summary = "interpolating, triangle split, triangle meshes; the 8-point rule, tension w (default 1/16); C1 on regular meshes",
@@ -234,7 +234,7 @@ const Scheme& butterfly_scheme() {
   return scheme;
 }
 
-const Scheme& modified_butterfly_scheme() {
+const Scheme& modified_butterfly_scheme() noexcept {
   static const Scheme scheme{
       .name = "modified-butterfly",
       .summary = "interpolating, triangle split, triangle meshes; Butterfly with rules for extraordinary and crease vertices",

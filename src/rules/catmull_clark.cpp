@@ -143,8 +143,8 @@ constexpr RegularGrid kRegularGrid{.even = {0.125, 0.75, 0.125}, .odd = {0.5, 0.
 
 }  // namespace
 
-double catmull_clark_gamma(double theta) { return 0.375 - 0.25 * std::cos(theta); }
-double catmull_clark_subdominant_eigenvalue(int valence) { return subdominant_eigenvalue(valence); }
+double catmull_clark_gamma(double theta) noexcept { return 0.375 - 0.25 * std::cos(theta); }
+double catmull_clark_subdominant_eigenvalue(int valence) noexcept { return subdominant_eigenvalue(valence); }
 
 const Scheme& catmull_clark_scheme() {
   static const Scheme scheme{

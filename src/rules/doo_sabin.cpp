@@ -28,7 +28,7 @@
 
 namespace subdiv {
 
-double doo_sabin_weight(int k, int i) {
+double doo_sabin_weight(int k, int i) noexcept {
   const double interior = (3.0 + 2.0 * std::cos(2.0 * std::numbers::pi * i / k)) / (4.0 * k);
   return i % k == 0 ? 0.25 + 5.0 / (4.0 * k) : interior;
 }

@@ -153,7 +153,7 @@ void two_step_positions(const MeshTopology& t, const SplitMap& map, std::span<co
 
 }  // namespace
 
-const Scheme& four_eight_two_steps_scheme() {
+const Scheme& four_eight_two_steps_scheme() noexcept {
   static const Scheme scheme{
       .name = "four-eight (two steps)",
       .summary = "two four-eight steps as one quad split (closed meshes)",
@@ -166,7 +166,7 @@ const Scheme& four_eight_two_steps_scheme() {
   return scheme;
 }
 
-const Scheme& four_eight_scheme() {
+const Scheme& four_eight_scheme() noexcept {
   static const Scheme scheme{
       .name = "four-eight",
       .summary = "approximating, sqrt2 split (arity sqrt 2), closed polygon meshes; 4-8 on quads, the C4 box spline "

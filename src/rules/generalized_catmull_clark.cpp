@@ -46,7 +46,7 @@
 
 namespace subdiv {
 
-std::pair<double, double> SmoothingWeights::at(int m) const {
+std::pair<double, double> SmoothingWeights::at(int m) const noexcept {
   for (const AtValence& v : valences)
     if (v.valence == m) return {v.alpha, v.beta};
   if (rule == Rule::catmull_clark) return {1.0 - 3.0 / m, 2.0 / m};

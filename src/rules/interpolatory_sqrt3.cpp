@@ -317,7 +317,7 @@ void boundary_point(const LevelView& level, Index e, Index v, MaskBuilder& mask)
 
 }  // namespace
 
-const Scheme& interpolatory_sqrt3_scheme() {
+const Scheme& interpolatory_sqrt3_scheme() noexcept {
   static const Scheme scheme{
       .name = "interpolatory-sqrt3",
       .summary = "interpolating, sqrt3 split (arity sqrt 3), triangles; a 12-point rule, extraordinary rules at "

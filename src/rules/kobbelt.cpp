@@ -86,7 +86,7 @@ KobbeltVirtualWeights kobbelt_virtual_point_weights(int n, int i, double tension
   return w;
 }
 
-double kobbelt_diagonal_weight(double tension) { return 2.0 * tension / (1.0 + 2.0 * tension); }
+double kobbelt_diagonal_weight(double tension) noexcept { return 2.0 * tension / (1.0 + 2.0 * tension); }
 
 namespace {
 
@@ -321,7 +321,7 @@ void check_tension(std::string_view name, const SchemeParameters& parameters) {
 
 }  // namespace
 
-const Scheme& kobbelt_scheme() {
+const Scheme& kobbelt_scheme() noexcept {
   static const Scheme scheme{
       .name = "kobbelt",
       .summary = "interpolating, quad split (arity 2), quad meshes; the tensor-product four-point scheme on regular "

@@ -16,7 +16,7 @@ constexpr RegularTriangleGrid kRegularGrid{.centre = 1.0, .ring = 0.0, .near = 0
 
 }  // namespace
 
-const Scheme& linear_scheme() {
+const Scheme& linear_scheme() noexcept {
   static const Scheme scheme{.name = "linear",
                              .summary = "interpolating baseline, triangle split: edge midpoints",
                              .citation = "linear (midpoint) refinement of triangle meshes",

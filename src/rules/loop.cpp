@@ -51,7 +51,7 @@ double loop_beta_formula(int k) {
 
 }  // namespace
 
-double loop_beta(int k) {
+double loop_beta(int k) noexcept {
   // Tabulated for the usual valences: a cosine per vertex was 3% of a
   // refinement. The table holds the formula's own values.
   static const auto table = [] {
@@ -62,9 +62,9 @@ double loop_beta(int k) {
   return k > 0 && k < static_cast<int>(table.size()) ? table[static_cast<std::size_t>(k)] : loop_beta_formula(k);
 }
 
-double loop_warren_beta(int k) { return k == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * k); }
+double loop_warren_beta(int k) noexcept { return k == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * k); }
 
-double loop_gamma(double theta) { return 0.5 - 0.25 * std::cos(theta); }
+double loop_gamma(double theta) noexcept { return 0.5 - 0.25 * std::cos(theta); }
 
 namespace {
 

@@ -23,7 +23,7 @@ void edge_point(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) { 
 
 }  // namespace
 
-const Scheme& midedge_scheme() {
+const Scheme& midedge_scheme() noexcept {
   static const Scheme scheme{
       .name = "midedge",
       .summary = "approximating, midedge split (arity sqrt 2), closed polygon meshes; edge midpoints (the simplest "

@@ -26,7 +26,7 @@
 
 namespace subdiv {
 
-const char* to_string(Quasi48Boundary b) { return b == Quasi48Boundary::fixed ? "fixed" : "smoothed"; }
+const char* to_string(Quasi48Boundary b) noexcept { return b == Quasi48Boundary::fixed ? "fixed" : "smoothed"; }
 
 std::vector<char> quasi_4_8_fixed_vertices(const PolygonMesh& child, const MeshTopology& child_topology,
                                            Quasi48Boundary boundary) {
@@ -116,7 +116,7 @@ std::vector<Scheme> steps_of(const SchemeParameters& parameters) {
 
 }  // namespace
 
-const Scheme& quasi_4_8_scheme() {
+const Scheme& quasi_4_8_scheme() noexcept {
   static const Scheme scheme{
       .name = "quasi-4-8",
       .summary = "approximating, geometry-sensitive bisection (one binary step per level, two per 4-8 step), "

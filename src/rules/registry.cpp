@@ -22,7 +22,7 @@
 
 namespace subdiv {
 
-const char* to_string(VertexRule r) {
+const char* to_string(VertexRule r) noexcept {
   switch (r) {
     case VertexRule::smooth: return "smooth";
     case VertexRule::dart: return "dart";

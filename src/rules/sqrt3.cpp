@@ -39,7 +39,7 @@ double sqrt3_alpha_formula(int n) { return (4.0 - 2.0 * std::cos(2.0 * std::numb
 
 }  // namespace
 
-double sqrt3_alpha(int n) {
+double sqrt3_alpha(int n) noexcept {
   // Tabulated for the usual valences (a cosine per vertex shows in profiles,
   // as for Loop's beta); the table holds the formula's own values.
   static const auto table = [] {
@@ -120,7 +120,7 @@ bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::s
 
 }  // namespace
 
-const Scheme& sqrt3_scheme() {
+const Scheme& sqrt3_scheme() noexcept {
   static const Scheme scheme{
       .name = "sqrt3",
       .summary = "approximating, sqrt3 split (arity sqrt 3), triangles; C2 on regular meshes, C1 at extraordinary "

@@ -27,7 +27,7 @@
 
 namespace subdiv {
 
-bool dual_split_has_v_face(const MeshTopology& topo, Index v) {
+bool dual_split_has_v_face(const MeshTopology& topo, Index v) noexcept {
   const Index faces = topo.vertex_face_count(v);
   return faces > 0 && (topo.vertex_kind(v) == VertexKind::boundary || faces >= 3);
 }

@@ -19,14 +19,14 @@ std::pair<Index, Index> child_faces(const MeshTopology& parent, SplitRule rule, 
   return {4 * f, 4 * f + 4};
 }
 
-double arity(SplitRule r) {
+double arity(SplitRule r) noexcept {
   if (r == SplitRule::identity) return 1.0;
   if (r == SplitRule::midedge || r == SplitRule::sqrt2 || r == SplitRule::quasi_4_8) return std::sqrt(2.0);
   if (r == SplitRule::sqrt3) return std::sqrt(3.0);
   return 2.0;
 }
 
-const char* to_string(SplitRule r) {
+const char* to_string(SplitRule r) noexcept {
   switch (r) {
     case SplitRule::quad: return "quad split (QP, arity 2)";
     case SplitRule::triangle: return "triangle split (TP, arity 2)";

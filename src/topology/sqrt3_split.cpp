@@ -40,7 +40,7 @@
 
 namespace subdiv {
 
-bool sqrt3_step_trisects(int level) { return level % 2 == 1; }
+bool sqrt3_step_trisects(int level) noexcept { return level % 2 == 1; }
 
 }  // namespace subdiv
 

@@ -13,6 +13,7 @@
 #include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/core/error.h"
 #include "subdiv/rules/generalized_catmull_clark.h"
+#include "subdiv/rules/scheme.h"
 #include "support/gcc_schemes.h"
 
 namespace subdiv {
@@ -173,6 +174,20 @@ TEST(GccClosedForms, MidpointDegreeTwoAtExtraordinaryFaces) {
 TEST(GccClosedForms, RefusesOtherSchemes) {
   EXPECT_THROW(gcc_theorem(gcc(5, 0.25, 0.5), 5), InvalidInputError);
   EXPECT_THROW(gcc_theorem(gcc(3, 0.25, 0.5), 2), InvalidInputError);
+  // Schemes without a degree parameter get the typed error, not a variant's.
+  EXPECT_THROW(gcc_theorem(*find_scheme("catmull-clark"), 5), InvalidInputError);
+  EXPECT_THROW(gcc_theorem(*find_scheme("quasi-4-8"), 5), InvalidInputError);
+}
+
+TEST(GccClosedForms, SecondDifferenceNormOfSchemesWithoutADegree) {
+  // Catmull-Clark's regular rule is the bicubic B-spline's: the same 1/4 as
+  // gcc of degree 3 with the B-spline's smoothing above.
+  EXPECT_NEAR(regular_second_difference_norm(*find_scheme("catmull-clark")), 0.25, 1e-15);
+  // Doo-Sabin's is the tensor-product Chaikin mask (1 + z1)^3 (1 + z2)^3 / 16:
+  // divided by (1 + z1)^2 it is [1 1] x [1 3 3 1] / 16, by (1 + z1)(1 + z2)
+  // [1 2 1] x [1 2 1] / 16; every parity class of either sums to 4/16.
+  EXPECT_NEAR(regular_second_difference_norm(*find_scheme("doo-sabin")), 0.25, 1e-15);
+  EXPECT_THROW(regular_second_difference_norm(*find_scheme("loop")), InvalidInputError);
 }
 
 }  // namespace

@@ -169,6 +169,21 @@ TEST(Validation, RequireValidThrowsWithTheFirstError) {
   EXPECT_NO_THROW(require_valid(validate(test::cube())));
 }
 
+TEST(Validation, RequireValidNamesAnErrorThatWasNotListed) {
+  MeshFile file;
+  ValidationOptions options;
+  options.max_issues_per_kind = 0;
+  file = read_mesh(test::data_path("nonmanifold_edge.obj"));
+  const auto r = validate(file.mesh, &file.lines, options);
+  ASSERT_TRUE(r.issues.empty());
+  try {
+    require_valid(r, "x.obj");
+    FAIL();
+  } catch (const ValidationError& e) {
+    EXPECT_STREQ(e.what(), "x.obj: 1 x non-manifold edge (not listed)");
+  }
+}
+
 TEST(Validation, TopologyOverloadAgrees) {
   const auto mesh = test::quad_grid(2, 2);
   const MeshTopology t(mesh);

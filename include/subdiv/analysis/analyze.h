@@ -1,10 +1,11 @@
 #pragma once
-// A scheme's behaviour at one configuration, everything the survey's
-// section 5 asks (Zorin, "Subdivision on arbitrary meshes", 2.1-2.2, 5.3):
-// the local subdivision matrix read off the real rules, its spectrum, the
-// limit and tangent masks, Reif's eigenvalue condition, the characteristic
-// map's regularity and injectivity, the C1 verdict, and the curvature
-// behaviour of Proposition 6.
+/// \file
+/// A scheme's behaviour at one configuration, everything the survey's
+/// section 5 asks (Zorin, "Subdivision on arbitrary meshes", 2.1-2.2, 5.3):
+/// the local subdivision matrix read off the real rules, its spectrum, the
+/// limit and tangent masks, Reif's eigenvalue condition, the characteristic
+/// map's regularity and injectivity, the C1 verdict, and the curvature
+/// behaviour of Proposition 6.
 
 #include <array>
 #include <optional>
@@ -29,8 +30,14 @@ enum class CurvatureBehaviour {
   unbounded,  ///< mu > lambda^2: curvature diverges for generic data, not C2
   not_applicable,  ///< lambda_1 != lambda_2, or no valid subdominant pair
 };
-const char* to_string(CurvatureBehaviour);
+/// The behaviour's name as the CLI prints it ("zero curvature", ...).
+/// \param behaviour The curvature behaviour.
+/// \return A static, null-terminated string: "-" for not_applicable, "?" for
+///         a value outside the enum.
+const char* to_string(CurvatureBehaviour behaviour) noexcept;
 
+/// Everything analyze() finds at one configuration: the local subdivision
+/// matrices, the spectrum, the masks, Reif's criterion and the verdict.
 struct ConfigurationAnalysis {
   /// The smallest invariant neighbourhood: its matrix gives the masks.
   LocalSubdivisionMatrix matrix;
@@ -40,14 +47,21 @@ struct ConfigurationAnalysis {
   Spectrum spectrum;  ///< of wide_matrix
   /// The leading eigenvalues lambda_0 .. lambda_3 (with multiplicity).
   std::vector<std::complex<double>> leading;
-  /// Left eigenvectors on `matrix`'s neighbourhood (nullopt when they do not
-  /// exist): the limit-position mask (eigenvalue 1, sum 1) and the two
-  /// tangent masks (subdominant pair).
+  /// The limit-position mask: the left eigenvector of eigenvalue 1 on
+  /// `matrix`'s neighbourhood, summing to 1. nullopt when it does not exist,
+  /// the neighbourhood is not invariant, or AnalysisOptions::masks is false.
   std::optional<Eigen::VectorXd> limit_mask;
+  /// The two tangent masks on `matrix`'s neighbourhood (left eigenvectors of
+  /// the subdominant pair, see subdiv::tangent_masks()). nullopt when the pair
+  /// is complex or missing, the neighbourhood is not invariant, or
+  /// AnalysisOptions::masks is false.
   std::optional<std::array<Eigen::VectorXd, 2>> tangent_masks;
   /// Reif's eigenvalue condition: lambda_0 = 1 simple > lambda_1 >= lambda_2
   /// > |lambda_3|, lambda_1 and lambda_2 real and positive, non-defective.
   bool eigenvalue_condition = false;
+  /// The characteristic map of `wide_matrix`'s subdominant eigenvectors;
+  /// nullopt when the eigenvalue condition fails, the eigenvectors have no
+  /// real basis, or AnalysisOptions::characteristic_map is false.
   std::optional<CharacteristicMap> characteristic_map;
   /// The smoothness of the scheme's regular rules (interior, and at boundary
   /// and corner configurations the straight boundary's too): Reif's
@@ -58,12 +72,18 @@ struct ConfigurationAnalysis {
   SmoothnessVerdict verdict = SmoothnessVerdict::inconclusive;
   std::string reason;  ///< what the verdict rests on: the configuration's part and the regular rules'
   std::string configuration_reason;  ///< the configuration's part alone (Reif's criterion)
+  /// Proposition 6's curvature behaviour; not_applicable unless the
+  /// eigenvalue condition holds.
   CurvatureBehaviour curvature = CurvatureBehaviour::not_applicable;
 };
 
+/// What analyze() computes and how.
 struct AnalysisOptions {
+  /// Clustering and rank tolerance of the spectral computations (see
+  /// spectrum()); must lie in (0, 0.1).
   double tolerance = 1e-9;
   int max_rings = 4;           ///< largest neighbourhood tried for invariance
+  /// Analysis steps the characteristic map is refined (its `levels`).
   int characteristic_levels = 3;
   bool characteristic_map = true;  ///< false: spectrum and masks only (faster)
   /// false: no limit or tangent masks either (the depth bound's rates need
@@ -80,6 +100,25 @@ struct AnalysisOptions {
   RefineOptions rules;
 };
 
+/// Analyses \p scheme at \p configuration: reads the local subdivision
+/// matrices off the scheme's own refinement of the configuration's ring
+/// mesh, computes the spectrum, the masks and Reif's criterion, and combines
+/// them with the regular rules' verdict (regular_smoothness_of(), remembered
+/// per rule). Without an invariant neighbourhood within
+/// `options.max_rings` rings the result carries only `matrix` and a reason.
+/// \param scheme The scheme whose rules are analysed.
+/// \param configuration The vertex configuration (interior, boundary or
+///        corner, valence k).
+/// \param options Tolerance, neighbourhood size, what to compute, and the
+///        refinement rules.
+/// \return The analysis; `verdict` and `reason` summarise it.
+/// \throws InvalidInputError if the ring layout does not cover the scheme or
+///         configuration, the scheme's period is below 1, refinement rejects
+///         the ring mesh or the scheme's parameters, or `options.tolerance`
+///         is not in (0, 0.1).
+/// \throws Error if the Schur iteration of an eigenvalue computation does not
+///         converge.
+/// \throws std::bad_alloc if memory runs out.
 ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration,
                               const AnalysisOptions& options = {});
 

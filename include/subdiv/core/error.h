@@ -1,6 +1,7 @@
 #pragma once
-// Typed exceptions. Every message says what went wrong and where (element
-// index, or file and line), so the CLI can print it as one line.
+/// \file
+/// Typed exceptions. Every message says what went wrong and where (element
+/// index, or file and line), so the CLI can print it as one line.
 
 #include <cstdint>
 #include <stdexcept>
@@ -44,9 +45,20 @@ class IoError : public Error {
 /// has no line (binary formats, a missing header).
 class ParseError : public IoError {
  public:
+  /// An error at \p line of \p path. The message (what()) is
+  /// "path:line: what", with "<input>" for an empty path and no ":line"
+  /// when \p line is 0.
+  /// \param path the file's path as given to the reader; may be empty.
+  /// \param line 1-based line number, 0 when unknown or not applicable.
+  /// \param what the problem, without location.
+  /// \throws std::bad_alloc if memory runs out.
   ParseError(const std::string& path, std::uint64_t line, const std::string& what);
-  const std::string& path() const { return path_; }
-  std::uint64_t line() const { return line_; }
+  /// The file's path as given to the constructor (possibly empty).
+  /// \return the path, valid as long as the error.
+  const std::string& path() const noexcept { return path_; }
+  /// The 1-based line of the problem.
+  /// \return the line number, or 0 when the problem has no line.
+  std::uint64_t line() const noexcept { return line_; }
 
  private:
   std::string path_;

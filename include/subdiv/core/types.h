@@ -1,5 +1,6 @@
 #pragma once
-// Basic value types shared by every module.
+/// \file
+/// Basic value types shared by every module.
 
 #include <array>
 #include <cmath>
@@ -25,27 +26,70 @@ inline constexpr double kInfiniteSharpness = 10.0;
 
 /// A point or vector in 3-space, double precision.
 struct Vec3 {
-  double x = 0.0;
-  double y = 0.0;
-  double z = 0.0;
+  double x = 0.0;  ///< first coordinate
+  double y = 0.0;  ///< second coordinate
+  double z = 0.0;  ///< third coordinate
 
-  constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
-  constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  /// Coordinate access by number.
+  /// \param i 0 for x, 1 for y; any other value selects z.
+  /// \return a reference to the coordinate.
+  constexpr double& operator[](int i) noexcept { return i == 0 ? x : (i == 1 ? y : z); }
+  /// Coordinate access by number.
+  /// \param i 0 for x, 1 for y; any other value selects z.
+  /// \return the coordinate's value.
+  constexpr double operator[](int i) const noexcept { return i == 0 ? x : (i == 1 ? y : z); }
 
-  friend constexpr Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-  friend constexpr Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-  friend constexpr Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
-  friend constexpr Vec3 operator*(Vec3 a, double s) { return s * a; }
-  constexpr Vec3& operator+=(Vec3 b) { x += b.x; y += b.y; z += b.z; return *this; }
+  /// Component-wise sum.
+  /// \param a first summand.
+  /// \param b second summand.
+  /// \return a + b.
+  friend constexpr Vec3 operator+(Vec3 a, Vec3 b) noexcept { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+  /// Component-wise difference.
+  /// \param a minuend.
+  /// \param b subtrahend.
+  /// \return a - b.
+  friend constexpr Vec3 operator-(Vec3 a, Vec3 b) noexcept { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+  /// Scaling by a scalar.
+  /// \param s the factor.
+  /// \param a the vector.
+  /// \return s a.
+  friend constexpr Vec3 operator*(double s, Vec3 a) noexcept { return {s * a.x, s * a.y, s * a.z}; }
+  /// Scaling by a scalar.
+  /// \param a the vector.
+  /// \param s the factor.
+  /// \return s a.
+  friend constexpr Vec3 operator*(Vec3 a, double s) noexcept { return s * a; }
+  /// Adds \p b component-wise.
+  /// \param b the vector to add.
+  /// \return *this.
+  constexpr Vec3& operator+=(Vec3 b) noexcept { x += b.x; y += b.y; z += b.z; return *this; }
+  /// Exact component-wise equality (so 0.0 == -0.0, and NaN differs from everything).
+  /// \param a first vector.
+  /// \param b second vector.
+  /// \return whether all three coordinates compare equal.
   friend constexpr bool operator==(Vec3 a, Vec3 b) = default;
 };
 
-constexpr double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-constexpr Vec3 cross(Vec3 a, Vec3 b) {
+/// Dot product.
+/// \param a first vector.
+/// \param b second vector.
+/// \return a . b.
+constexpr double dot(Vec3 a, Vec3 b) noexcept { return a.x * b.x + a.y * b.y + a.z * b.z; }
+/// Cross product (right-handed).
+/// \param a first vector.
+/// \param b second vector.
+/// \return a x b.
+constexpr Vec3 cross(Vec3 a, Vec3 b) noexcept {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double norm(Vec3 a) { return std::sqrt(dot(a, a)); }
-inline bool is_finite(Vec3 a) {
+/// Euclidean length.
+/// \param a the vector.
+/// \return |a|, computed as sqrt(dot(a, a)) (may overflow to infinity for huge coordinates).
+inline double norm(Vec3 a) noexcept { return std::sqrt(dot(a, a)); }
+/// Whether every coordinate is finite.
+/// \param a the vector.
+/// \return false if any coordinate is NaN or infinite.
+inline bool is_finite(Vec3 a) noexcept {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
 

@@ -1,14 +1,15 @@
 #pragma once
-// Adaptive refinement to an accuracy: refine only where control vertices are
-// further than eps from their limit positions, and join the levels without
-// cracks ("A priori computation of the subdivision depth", section 3.1,
-// static and mobile vertices; docs/depth.md, "Adaptive refinement").
-//
-// The output is a conforming mesh whose faces are faces of the uniform
-// levels (leaves of the face hierarchy) and, where a leaf meets finer
-// neighbours, a transition triangulation of the leaf. Every output vertex is
-// a vertex of some uniform level, at that level's position: its distance to
-// its limit is exactly what uniform refinement gives there.
+/// \file
+/// Adaptive refinement to an accuracy: refine only where control vertices are
+/// further than eps from their limit positions, and join the levels without
+/// cracks ("A priori computation of the subdivision depth", section 3.1,
+/// static and mobile vertices; docs/depth.md, "Adaptive refinement").
+///
+/// The output is a conforming mesh whose faces are faces of the uniform
+/// levels (leaves of the face hierarchy) and, where a leaf meets finer
+/// neighbours, a transition triangulation of the leaf. Every output vertex is
+/// a vertex of some uniform level, at that level's position: its distance to
+/// its limit is exactly what uniform refinement gives there.
 
 #include <cstdint>
 #include <optional>
@@ -21,8 +22,9 @@
 
 namespace subdiv {
 
+/// How adaptive_refine() refines.
 struct AdaptiveOptions {
-  DepthOptions depth;
+  DepthOptions depth;  ///< the refinement rules
   /// Deepest level refined; the refinement stops earlier once every leaf's
   /// corners are within eps. Throws InvalidInputError if that takes more.
   int max_level = 12;
@@ -30,10 +32,12 @@ struct AdaptiveOptions {
 
 /// Where an output vertex comes from: vertex `index` of uniform level `level`.
 struct AdaptiveVertexSource {
-  int level = 0;
-  Index index = 0;
+  int level = 0;    ///< the uniform level (0: the control mesh)
+  Index index = 0;  ///< the vertex's index in that level
 };
 
+/// The conforming adaptive mesh, where each vertex comes from, and how it
+/// compares with uniform refinement.
 struct AdaptiveResult {
   PolygonMesh mesh;  ///< conforming; faces of the uniform levels and transition faces
   std::vector<AdaptiveVertexSource> sources;  ///< one per output vertex
@@ -41,7 +45,7 @@ struct AdaptiveResult {
   /// Uniform steps after which every vertex is within eps (measured), and
   /// the face count there: what adaptive refinement is compared with.
   int uniform_depth = 0;
-  std::int64_t uniform_faces = 0;
+  std::int64_t uniform_faces = 0;  ///< faces of the uniform mesh at `uniform_depth`
   int leaves_per_level_max = 0;  ///< deepest level with a leaf face
   std::int64_t transition_faces = 0;  ///< output faces that are not uniform faces
 };
@@ -53,12 +57,34 @@ struct AdaptiveResult {
 /// the same way by its split. Throws as refine() does, and for meshes with
 /// hole tags (no rule here keeps a hole open). The result carries positions
 /// and faces only: no channels and no tags.
+/// \param mesh The control mesh.
+/// \param scheme The scheme (quad or triangle split, not composite).
+/// \param eps The accuracy: the largest vertex-to-limit distance allowed at
+///        a leaf's corners (mesh units), positive.
+/// \param options The refinement rules and the deepest level.
+/// \return The conforming mesh with its vertices' sources and distances.
+/// \throws InvalidInputError if \p eps is not positive, adaptive_unavailable()
+///         gives a reason, the mesh has hole tags, more than
+///         `options.max_level` levels are needed, refinement rejects the mesh
+///         (as refine() does), or limit positions fail (as limit_positions()
+///         does).
+/// \throws Error if the Schur iteration of an eigenvalue computation does not
+///         converge.
+/// \throws std::bad_alloc if memory runs out.
 AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
                                const AdaptiveOptions& options = {});
 
-/// Why adaptive_refine() refuses `scheme` whatever the mesh (composite
+/// Why adaptive_refine() refuses \p scheme whatever the mesh (composite
 /// schemes, splits other than quad and triangle, interpolating schemes with
 /// wide masks), or nothing where it covers it.
+/// \param scheme The scheme.
+/// \param options The refinement rules the scheme is analysed under.
+/// \return The reason, one sentence; nullopt where adaptive refinement applies.
+/// \throws InvalidInputError if the analysis of the scheme's regular
+///         interior configuration fails (see interpolates_with_wide_masks()).
+/// \throws Error if the Schur iteration of an eigenvalue computation does not
+///         converge.
+/// \throws std::bad_alloc if memory runs out.
 std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const AdaptiveOptions& options = {});
 
 }  // namespace subdiv

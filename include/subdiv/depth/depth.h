@@ -1,7 +1,8 @@
 #pragma once
-// The a priori depth of a mesh under a scheme: the bound (depth_bound.h)
-// measured on the mesh, what each level up to that depth costs, and a check
-// that refines and measures.
+/// \file
+/// The a priori depth of a mesh under a scheme: the bound (depth_bound.h)
+/// measured on the mesh, what each level up to that depth costs, and a check
+/// that refines and measures.
 
 #include <cstdint>
 #include <optional>
@@ -15,6 +16,7 @@
 
 namespace subdiv {
 
+/// How depth_bound(), check_depth() and adaptive_refine() refine.
 struct DepthOptions {
   /// Boundary interpolation and non-manifold handling, as for refine().
   RefineOptions refine;
@@ -28,22 +30,52 @@ struct DepthOptions {
 /// among the configurations present (docs/depth.md). A scheme
 /// with a two-step scheme (Scheme::fast_path.two_steps: 4-8) is bounded through it,
 /// in levels of two steps (DepthBound::steps_per_level).
-/// Throws as refine() does for meshes it cannot refine, and
-/// InvalidInputError naming a vertex (with its file and line from `lines`)
-/// whose configuration the analysis has no rate for (an interior vertex of
-/// two triangles).
+/// \param mesh The control mesh.
+/// \param scheme The scheme.
+/// \param options The refinement rules.
+/// \param lines Where the mesh's elements were read from, for error
+///        messages; nullptr: none.
+/// \return The bound, with `scheme` set to \p scheme's name.
+/// \throws InvalidInputError if depth_bound_unavailable() gives a reason,
+///         refinement rejects the mesh (as refine() does: TopologyError,
+///         ValidationError, ParameterError), limit positions fail (as
+///         limit_positions() does), or a vertex's configuration has no rate
+///         (the message names the vertex, with its file and line from
+///         \p lines: an interior vertex of two triangles).
+/// \throws Error if the Schur iteration of an eigenvalue computation does not
+///         converge.
+/// \throws std::bad_alloc if memory runs out.
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options = {},
                        const SourceLines* lines = nullptr);
 
-/// Why depth_bound() refuses `scheme` whatever the mesh (composite schemes,
+/// Why depth_bound() refuses \p scheme whatever the mesh (composite schemes,
 /// splits without a bound, interpolating schemes with wide masks), or
 /// nothing where a bound applies.
+/// \param scheme The scheme.
+/// \param options The refinement rules the scheme is analysed under.
+/// \return The reason, one sentence; nullopt where a bound applies.
+/// \throws InvalidInputError if the analysis of the scheme's regular
+///         interior configuration fails (see interpolates_with_wide_masks()).
+/// \throws Error if the Schur iteration of an eigenvalue computation does not
+///         converge.
+/// \throws std::bad_alloc if memory runs out.
 std::optional<std::string> depth_bound_unavailable(const Scheme& scheme, const DepthOptions& options = {});
 
 /// Whether the scheme interpolates with masks wider than a face (the
 /// Butterfly schemes, Kobbelt's): its vertices are on the limit surface from
 /// the start, so their distance to it bounds nothing; depth_bound and
-/// adaptive_refine refuse such schemes.
+/// adaptive_refine refuse such schemes. Decided by analyze() at the regular
+/// interior configuration (valence 4 for the quad split, else 6): its limit
+/// mask is the centre alone over a neighbourhood wider than one ring.
+/// \param scheme The scheme.
+/// \param options The refinement rules the scheme is analysed under.
+/// \return Whether the scheme interpolates with wide masks.
+/// \throws InvalidInputError as analyze() does for that configuration (a
+///         scheme the ring layout does not cover, a period below 1, rules
+///         refinement rejects).
+/// \throws Error if the Schur iteration of an eigenvalue computation does not
+///         converge.
+/// \throws std::bad_alloc if memory runs out.
 bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& options = {});
 
 /// Size of the mesh after `level` uniform steps, counted from the control
@@ -52,33 +84,53 @@ bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& opti
 /// meshes; an upper bound for the sqrt3 split's boundaries and for quasi
 /// 4-8's geometric bisection.
 struct LevelCost {
-  int level = 0;
-  std::int64_t vertices = 0;
-  std::int64_t faces = 0;
-  std::int64_t edges = 0;
-  std::int64_t corners = 0;
+  int level = 0;              ///< the level (levels of two steps for 4-8)
+  std::int64_t vertices = 0;  ///< vertex count
+  std::int64_t faces = 0;     ///< face count
+  std::int64_t edges = 0;     ///< edge count
+  std::int64_t corners = 0;   ///< face corners (the sum of the face sizes)
   /// Positions (3 doubles per vertex) plus face arrays (one 32-bit index per
   /// corner and per face offset): what a PolygonMesh of that level holds.
   std::int64_t bytes = 0;
 };
 
-/// Levels 0 .. `levels` of `mesh` under `scheme`'s split (4-8: levels of
+/// Levels 0 .. \p levels of \p mesh under \p scheme's split (4-8: levels of
 /// two steps, as its bound counts them).
+/// \param mesh The control mesh.
+/// \param scheme The scheme whose split is counted.
+/// \param levels The last level counted; below 0 gives no entries.
+/// \return levels + 1 entries, level 0 first.
+/// \throws InvalidInputError if the mesh's index arrays are malformed.
+/// \throws std::bad_alloc if memory runs out.
 std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme, int levels);
 
+/// What check_depth() measures: the bound at a depth against the real
+/// vertex-to-limit distances there.
 struct DepthCheck {
-  int depth = 0;
+  int depth = 0;          ///< the level checked
   double bound = 0.0;     ///< the bound at `depth`
   double measured = 0.0;  ///< largest vertex-to-limit distance after `depth` levels
   /// The same one level less (when depth > 0): was depth - 1 already enough?
   bool has_previous = false;
-  double measured_previous = 0.0;
+  double measured_previous = 0.0;  ///< largest vertex-to-limit distance after `depth` - 1 levels
   Index approximated = 0;  ///< vertices whose limit is only approximated at `depth`
 };
 
-/// Refines `depth` levels (and depth - 1) of bound.steps_per_level steps
+/// Refines \p depth levels (and depth - 1) of bound.steps_per_level steps
 /// each and measures every vertex's distance to its limit position, both
 /// with the scheme's own steps and limits.
+/// \param mesh The control mesh.
+/// \param scheme The scheme.
+/// \param bound The bound checked (its `steps_per_level` and at()).
+/// \param depth The level checked; 0 measures the control mesh.
+/// \param options The refinement rules.
+/// \return The bound and the measured distances at \p depth (and
+///         \p depth - 1 when \p depth > 0).
+/// \throws InvalidInputError if refinement rejects the mesh (as refine()
+///         does) or limit positions fail (as limit_positions() does).
+/// \throws Error if the Schur iteration of an eigenvalue computation does not
+///         converge.
+/// \throws std::bad_alloc if memory runs out.
 DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const DepthBound& bound, int depth,
                        const DepthOptions& options = {});
 

@@ -1,5 +1,6 @@
 #pragma once
-// The quantities the depth bounds start from, measured on a control mesh.
+/// \file
+/// The quantities the depth bounds start from, measured on a control mesh.
 
 #include <vector>
 
@@ -15,17 +16,32 @@ namespace subdiv {
 /// opposite neighbours; through every boundary vertex with 3 edges, its two
 /// boundary neighbours. These are Cheng's M (Catmull-Clark) and the paper's
 /// M for Doo-Sabin on a grid; vertices of other valences have no lines.
+/// \param mesh The mesh.
+/// \return The largest second difference (mesh units), 0 when no vertex has
+///         lines.
+/// \throws InvalidInputError if the mesh's index arrays are malformed.
+/// \throws std::bad_alloc if memory runs out.
 double max_second_difference(const PolygonMesh& mesh);
 
+/// Each vertex's distance to its limit position, and the largest.
 struct LimitDistances {
   std::vector<double> distances;  ///< |P_v - limit(P_v)| per vertex
-  double max = 0.0;
-  Index max_vertex = kInvalidIndex;
+  double max = 0.0;               ///< the largest distance; 0 for a mesh without vertices
+  Index max_vertex = kInvalidIndex;  ///< a vertex at `max` (the first); kInvalidIndex without vertices
   Index approximated = 0;  ///< vertices whose limit is only approximated (see LimitResult)
 };
 
-/// Every vertex's distance to its limit position under `scheme`
-/// (through limit_positions()).
+/// Every vertex's distance to its limit position under \p scheme
+/// (through limit_positions(), without normals).
+/// \param mesh The mesh.
+/// \param scheme The scheme.
+/// \param options The limit options (`normals` is ignored).
+/// \return The distances, the largest and where it is.
+/// \throws InvalidInputError as limit_positions() does: a composite or
+///         midedge scheme, negative caps, or a mesh refinement rejects.
+/// \throws Error if the Schur iteration of an eigenvalue computation does not
+///         converge.
+/// \throws std::bad_alloc if memory runs out.
 LimitDistances limit_distances(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options = {});
 
 }  // namespace subdiv

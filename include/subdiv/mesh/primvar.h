@@ -1,6 +1,7 @@
 #pragma once
-// Data channels ("primvars") that ride along with a mesh and that refinement
-// carries to every level: UVs, colours, normals, anything with N components.
+/// \file
+/// Data channels ("primvars") that ride along with a mesh and that refinement
+/// carries to every level: UVs, colours, normals, anything with N components.
 
 #include <string>
 #include <vector>
@@ -12,11 +13,13 @@ namespace subdiv {
 /// One value of `components` doubles per mesh vertex, interpolated with the
 /// same weights as the positions.
 struct VertexChannel {
-  std::string name;
-  int components = 0;
+  std::string name;            ///< identifies the channel ("uv", "color", "normal", ...)
+  int components = 0;          ///< doubles per value (> 0 in a valid channel)
   std::vector<double> values;  ///< size = vertex_count * components
 
-  Index value_count() const {
+  /// Number of whole values stored.
+  /// \return values.size() / components, or 0 when components <= 0.
+  Index value_count() const noexcept {
     return components > 0 ? static_cast<Index>(values.size() / static_cast<std::size_t>(components)) : 0;
   }
 };
@@ -25,12 +28,14 @@ struct VertexChannel {
 /// PolygonMesh::face_indices), the index of its value. Corners that meet at a
 /// vertex may use different values (UV seams).
 struct FaceVaryingChannel {
-  std::string name;
-  int components = 0;
+  std::string name;             ///< identifies the channel ("uv", "normal", ...)
+  int components = 0;           ///< doubles per value (> 0 in a valid channel)
   std::vector<double> values;   ///< size = value_count * components
-  std::vector<Index> indices;   ///< one per face corner
+  std::vector<Index> indices;   ///< one per face corner, each in [0, value_count())
 
-  Index value_count() const {
+  /// Number of whole values in the pool.
+  /// \return values.size() / components, or 0 when components <= 0.
+  Index value_count() const noexcept {
     return components > 0 ? static_cast<Index>(values.size() / static_cast<std::size_t>(components)) : 0;
   }
 };

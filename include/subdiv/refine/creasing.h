@@ -1,30 +1,31 @@
 #pragma once
-// Sharpness and vertex rules of one level, the same for every scheme:
-// infinitely sharp and semi-sharp creases and corners (DeRose, Kass and
-// Truong 1998, "Subdivision surfaces in character animation", section 3, as
-// OpenSubdiv's Sdc::Crease implements them, with its uniform or its Chaikin
-// creasing method).
-//
-// - Boundary, non-manifold and inconsistently oriented edges are infinitely
-//   sharp; so is a boundary vertex with a single face in edge-and-corner
-//   mode, an isolated vertex, and a non-manifold vertex unless it lies on
-//   exactly two sharp edges (a non-manifold crease).
-// - One level down, a sharpness s becomes s - 1 (infinite stays infinite):
-//   vertex sharpness always, edge sharpness with the uniform method.
-// - Chaikin creasing (Sdc::Options::CREASE_CHAIKIN, `t creasemethod chaikin`)
-//   subdivides a semi-sharp edge's sharpness per end: the child of edge e at
-//   its end vertex v gets 3/4 s(e) + 1/4 mean(s of the other semi-sharp edges
-//   at v) - 1, at least 0; s(e) - 1 where e is the only semi-sharp edge at v.
-//   The two halves of an edge can then differ (child_edge_sharpness).
-// - An edge point uses the crease rule where the edge is sharp and both its
-//   children are sharp one level down (uniform: s >= 1), the smooth rule for
-//   s <= 0, and (1 - s) smooth + s crease otherwise (edge_crease_weight).
-// - A vertex's rule follows from its own sharpness and the number of sharp
-//   edges around it (corner, or 0/1/2/3+ sharp edges: smooth, dart, crease,
-//   corner). Where the rule one level down (from the children of its edges at
-//   the vertex) differs, the vertex point blends the two masks, with weight w
-//   on the parent's rule: the mean parent sharpness of the edges (and the
-//   vertex) that stop being sharp, at most 1.
+/// \file
+/// Sharpness and vertex rules of one level, the same for every scheme:
+/// infinitely sharp and semi-sharp creases and corners (DeRose, Kass and
+/// Truong 1998, "Subdivision surfaces in character animation", section 3, as
+/// OpenSubdiv's Sdc::Crease implements them, with its uniform or its Chaikin
+/// creasing method).
+///
+/// - Boundary, non-manifold and inconsistently oriented edges are infinitely
+///   sharp; so is a boundary vertex with a single face in edge-and-corner
+///   mode, an isolated vertex, and a non-manifold vertex unless it lies on
+///   exactly two sharp edges (a non-manifold crease).
+/// - One level down, a sharpness s becomes s - 1 (infinite stays infinite):
+///   vertex sharpness always, edge sharpness with the uniform method.
+/// - Chaikin creasing (Sdc::Options::CREASE_CHAIKIN, `t creasemethod chaikin`)
+///   subdivides a semi-sharp edge's sharpness per end: the child of edge e at
+///   its end vertex v gets 3/4 s(e) + 1/4 mean(s of the other semi-sharp edges
+///   at v) - 1, at least 0; s(e) - 1 where e is the only semi-sharp edge at v.
+///   The two halves of an edge can then differ (child_edge_sharpness).
+/// - An edge point uses the crease rule where the edge is sharp and both its
+///   children are sharp one level down (uniform: s >= 1), the smooth rule for
+///   s <= 0, and (1 - s) smooth + s crease otherwise (edge_crease_weight).
+/// - A vertex's rule follows from its own sharpness and the number of sharp
+///   edges around it (corner, or 0/1/2/3+ sharp edges: smooth, dart, crease,
+///   corner). Where the rule one level down (from the children of its edges at
+///   the vertex) differs, the vertex point blends the two masks, with weight w
+///   on the parent's rule: the mean parent sharpness of the edges (and the
+///   vertex) that stop being sharp, at most 1.
 
 #include <span>
 #include <vector>
@@ -35,6 +36,7 @@
 
 namespace subdiv {
 
+/// The sharpness and vertex rules of one level (compute_creasing()).
 struct LevelCreasing {
   /// This level's edge sharpness; empty when no edge is sharp (the common
   /// closed smooth mesh, which then needs no array).
@@ -57,16 +59,30 @@ struct LevelCreasing {
 /// uniform method; with Chaikin's, a semi-sharp edge's child gets
 /// 3/4 s + 1/4 (mean of the other semi-sharp s) - 1, at least 0, or s - 1
 /// when it is the only semi-sharp edge. `child` has parent.size() entries.
-void subdivide_sharpness_around_vertex(CreaseMethod method, std::span<const double> parent, std::span<double> child);
+/// \param method the creasing method.
+/// \param parent the sharpness of each edge around the vertex.
+/// \param child receives the children's sharpness, entry for entry.
+/// \pre child.size() >= parent.size() (unchecked).
+void subdivide_sharpness_around_vertex(CreaseMethod method, std::span<const double> parent,
+                                       std::span<double> child) noexcept;
 
 /// The sharpness of edge e (0 when the level has no sharp edge).
-inline double edge_sharpness_of(const LevelCreasing& c, Index e) {
+/// \param c the level's creasing.
+/// \param e an edge of the level.
+/// \return its sharpness (kInfiniteSharpness for boundary and non-manifold edges).
+/// \pre \p e is in [0, edge count) (unchecked).
+inline double edge_sharpness_of(const LevelCreasing& c, Index e) noexcept {
   return c.edge_sharpness.empty() ? 0.0 : c.edge_sharpness[static_cast<std::size_t>(e)];
 }
 
 /// The sharpness one level down of edge e's child at end `end` (0 or 1,
 /// as in topology.edge_vertices(e)).
-inline double child_sharpness_of(const LevelCreasing& c, Index e, int end) {
+/// \param c the level's creasing.
+/// \param e an edge of the level.
+/// \param end 0 or 1: which end's child.
+/// \return the child's sharpness.
+/// \pre \p e is in [0, edge count) and \p end is 0 or 1 (unchecked).
+inline double child_sharpness_of(const LevelCreasing& c, Index e, int end) noexcept {
   if (c.child_edge_sharpness.empty()) return subdivide_sharpness(edge_sharpness_of(c, e));
   return c.child_edge_sharpness[2 * static_cast<std::size_t>(e) + static_cast<std::size_t>(end)];
 }
@@ -77,7 +93,11 @@ inline double child_sharpness_of(const LevelCreasing& c, Index e, int end) {
 /// otherwise. With Chaikin creasing an edge of sharpness s in (1, 4/3) can
 /// have a child that decays to 0; OpenSubdiv then weights the crease rule
 /// by s > 1 (an affine extrapolation), and so does subdiv.
-inline double edge_crease_weight(const LevelCreasing& c, Index e) {
+/// \param c the level's creasing.
+/// \param e an edge of the level.
+/// \return the crease rule's weight, >= 0.
+/// \pre \p e is in [0, edge count) (unchecked).
+inline double edge_crease_weight(const LevelCreasing& c, Index e) noexcept {
   const double s = edge_sharpness_of(c, e);
   if (s <= 0.0) return 0.0;
   if (c.child_edge_sharpness.empty()) return s >= 1.0 ? 1.0 : s;
@@ -85,12 +105,27 @@ inline double edge_crease_weight(const LevelCreasing& c, Index e) {
   return c.child_edge_sharpness[i] > 0.0 && c.child_edge_sharpness[i + 1] > 0.0 ? 1.0 : s;
 }
 
-/// The rule for a vertex of this sharpness whose edges have these sharpnesses.
-VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count);
+/// The rule for a vertex of this sharpness with this many sharp edges:
+/// corner for a sharp vertex, else smooth, dart, crease or corner for 0, 1,
+/// 2 or more sharp edges.
+/// \param vertex_sharpness the vertex's sharpness (> 0: a corner).
+/// \param sharp_edge_count the sharp edges around the vertex.
+/// \return the rule.
+VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) noexcept;
 
 /// The creasing of a level whose tags are `mesh.tags` (crease and corner
 /// sharpness), under `boundary` and the creasing `method` (the caller's
 /// choice: refinement uses the mesh's `creasemethod` tag unless overridden).
+/// Crease tags on vertex pairs that are not edges, and corner tags on
+/// vertices outside the mesh, are ignored; an edge tagged twice takes the
+/// larger sharpness.
+/// \param mesh the level (its tags are read).
+/// \param topology the topology of \p mesh.
+/// \param boundary the boundary interpolation.
+/// \param method the creasing method.
+/// \return the level's creasing.
+/// \pre \p topology was built from \p mesh (unchecked).
+/// \throws std::bad_alloc if memory runs out.
 LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topology, BoundaryInterpolation boundary,
                                CreaseMethod method);
 

@@ -1,7 +1,8 @@
 #pragma once
-// Uniform refinement: the fast path (positions and vertex channels written
-// directly from the masks) and the stencil path (the same masks recorded as
-// tables), level by level. Each level is a complete mesh.
+/// \file
+/// Uniform refinement: the fast path (positions and vertex channels written
+/// directly from the masks) and the stencil path (the same masks recorded as
+/// tables), level by level. Each level is a complete mesh.
 
 #include <functional>
 #include <optional>
@@ -37,8 +38,14 @@ enum class CornerAngles {
   measured,
 };
 
-const char* to_string(BoundaryRules);
-const char* to_string(CornerAngles);
+/// The rules' name.
+/// \param rules the boundary rules.
+/// \return "standard" or "piecewise-smooth", a static string.
+const char* to_string(BoundaryRules rules) noexcept;
+/// The source's name.
+/// \param angles where corner angles come from.
+/// \return "fixed" or "measured", a static string.
+const char* to_string(CornerAngles angles) noexcept;
 
 /// The rule choices: what surface a scheme makes from a mesh. Every command
 /// that refines takes the same ones; the analysis reads them too.
@@ -49,11 +56,11 @@ struct RuleOptions {
   /// oriented faces), treating those elements as infinitely sharp, as
   /// OpenSubdiv does. Otherwise they are rejected.
   bool allow_non_manifold = false;
-  BoundaryRules boundary_rules = BoundaryRules::standard;
-  CornerAngles corner_angles = CornerAngles::fixed;
+  BoundaryRules boundary_rules = BoundaryRules::standard;  ///< the rules next to sharp features
+  CornerAngles corner_angles = CornerAngles::fixed;  ///< piecewise-smooth rules: where corner angles come from
   /// The flatness parameter s at concave corners (piecewise-smooth rules):
   /// unset for the default s = 1 - (1/4) / lambda_3, 0 to switch the
-  /// modification off.
+  /// modification off, else in (0, 1].
   std::optional<double> flatness;
   /// Overrides the mesh's `creasemethod` tag (uniform or Chaikin creasing of
   /// semi-sharp edges; creasing.h). The refined levels' tags then name this
@@ -63,15 +70,21 @@ struct RuleOptions {
 
 /// The boundary interpolation refinement uses on `mesh`: the option's
 /// override, else the mesh's `interpolateboundary` tag.
-BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RuleOptions& options);
+/// \param mesh the mesh (its tags are read).
+/// \param options the rule choices.
+/// \return the boundary interpolation.
+BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept;
 /// The crease method refinement uses on `mesh`: the option's override, else
 /// the mesh's `creasemethod` tag.
-CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& options);
+/// \param mesh the mesh (its tags are read).
+/// \param options the rule choices.
+/// \return the crease method.
+CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept;
 
 /// A refinement: the rule choices, and the run controls below, none of
 /// which changes the surface made.
 struct RefineOptions : RuleOptions {
-  int levels = 1;
+  int levels = 1;  ///< the uniform steps to take, >= 0
   /// The level the input mesh is at: 0 for a control mesh, k for a mesh
   /// made by k steps of the same scheme. The sqrt3 split alternates its
   /// boundary treatment with the level (sqrt3_step_trisects()), so refining a
@@ -99,31 +112,87 @@ struct RefineOptions : RuleOptions {
   std::function<void(int level, const PolygonMesh& mesh)> on_level;
 };
 
-/// Throws (ValidationError, InvalidInputError) unless `mesh` can be refined
-/// with `scheme` under `options`; the message names the offending element.
+/// Checks that `mesh` can be refined with `scheme` under `options`; the
+/// message names the offending element (and, with `lines`, its file and
+/// line). Every refinement entry point runs these checks first.
+/// \param mesh the mesh to refine.
+/// \param scheme the scheme.
+/// \param options the rule choices and run controls.
+/// \param lines where given, the source lines that errors name.
+/// \throws ParameterError if the scheme's parameters are out of range
+///   (check_parameters()).
+/// \throws ValidationError if the mesh is not valid (bad indices; non-manifold
+///   or inconsistently oriented elements unless options.allow_non_manifold).
+/// \throws InvalidInputError for negative options.levels or
+///   options.start_level, boundary interpolation `none`, malformed face
+///   arrays, a tag or option the scheme has no rules for (schemes with a
+///   non-primal split and composite schemes: piecewise-smooth rules,
+///   non-manifold input, holes, creases and corners, except that sqrt3 takes
+///   corners and quasi 4-8 creases and corners), a boundary on a scheme that
+///   needs a closed mesh, faces other than the scheme's
+///   (triangles, quads), or two triangles on the same three vertices (the
+///   triangle, sqrt3 and bisection splits, unless options.allow_non_manifold).
+/// \throws std::bad_alloc if memory runs out.
 void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                      const SourceLines* lines = nullptr);
 
 /// The mesh after options.levels uniform steps: positions and every vertex
 /// channel through the scheme's masks, face-varying channels linearly within
 /// faces, tags propagated. Validates the input first (check_refinable), with
-/// `lines` naming the file and lines in its errors.
+/// `lines` naming the file and lines in its errors. Exceptions thrown by
+/// options.on_level propagate.
+/// \param mesh the mesh to refine, at level options.start_level.
+/// \param scheme the scheme.
+/// \param options the rule choices and run controls.
+/// \param lines where given, the source lines that errors name.
+/// \return the refined mesh.
+/// \throws InvalidInputError, ParameterError or ValidationError as
+///   check_refinable() does; InvalidInputError also, under the
+///   piecewise-smooth rules, for options.flatness outside [0, 1] or a concave
+///   corner whose configuration lacks the flatness modification's spectrum,
+///   once such a corner is met (check_refinable() does not look at them).
+/// \throws TopologyError where a split refuses a level (see split_topology():
+///   a trisecting sqrt3 step on a triangle with two boundary edges).
+/// \throws std::bad_alloc if memory runs out.
 PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {},
                    const SourceLines* lines = nullptr);
 
 /// The same refinement recorded as stencil tables, one per level made
 /// (level i-1 -> level i; one for both of two steps taken at once, see
 /// RefineOptions::on_level). `final_level`, if given, receives the last level's mesh with
-/// positions evaluated through the tables.
+/// positions evaluated through the tables. The grid path
+/// (RefineOptions::regular_grids) is not taken.
+/// \param mesh the mesh to refine, at level options.start_level.
+/// \param scheme the scheme.
+/// \param options the rule choices and run controls.
+/// \param final_level where given, receives the last level's mesh.
+/// \return the tables, coarse first; empty for 0 levels.
+/// \throws InvalidInputError, ParameterError, ValidationError or
+///   TopologyError as refine() does.
+/// \throws std::bad_alloc if memory runs out.
 std::vector<StencilTable> refine_stencils(const PolygonMesh& mesh, const Scheme& scheme,
                                           const RefineOptions& options = {}, PolygonMesh* final_level = nullptr);
 
 /// The same refinement as one table, coarse -> level options.levels, built
 /// level by level from the composed rows (faster than composing the
 /// per-level tables afterwards; the same up to rounding).
+/// \param mesh the mesh to refine, at level options.start_level.
+/// \param scheme the scheme.
+/// \param options the rule choices and run controls.
+/// \return the table: a row per vertex of the last level over the vertices
+///   of \p mesh; the identity for 0 levels.
+/// \throws InvalidInputError, ParameterError, ValidationError or
+///   TopologyError as refine() does.
+/// \throws std::bad_alloc if memory runs out.
 StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {});
 
 /// Composes per-level tables into one: coarse -> last level.
+/// \param levels the tables, coarse first, each over the previous one's rows.
+/// \return the composed table; an empty table (no rows, no sources) for an
+///   empty list.
+/// \throws InvalidInputError if a table's source count differs from the
+///   previous table's row count.
+/// \throws std::bad_alloc if memory runs out.
 StencilTable compose(const std::vector<StencilTable>& levels);
 
 }  // namespace subdiv

@@ -1,10 +1,11 @@
 #pragma once
-// A subdivision scheme as a runtime value: its refinement rule and its masks.
-// A mask is a function from a local neighbourhood of the parent level to
-// weights over parent vertices (and, in quad splits, the level's new face
-// points: see MaskBuilder); masks never read or write positions. The same
-// masks feed the fast path (positions written directly) and recorded stencil
-// tables, so refinement and analysis share one code path.
+/// \file
+/// A subdivision scheme as a runtime value: its refinement rule and its masks.
+/// A mask is a function from a local neighbourhood of the parent level to
+/// weights over parent vertices (and, in quad splits, the level's new face
+/// points: see MaskBuilder); masks never read or write positions. The same
+/// masks feed the fast path (positions written directly) and recorded stencil
+/// tables, so refinement and analysis share one code path.
 
 #include <array>
 #include <cstdint>
@@ -34,9 +35,15 @@ enum class VertexRule : std::uint8_t {
 };
 
 /// Which rule makes an edge point.
-enum class EdgeRule : std::uint8_t { smooth, crease };
+enum class EdgeRule : std::uint8_t {
+  smooth,  ///< the scheme's smooth rule
+  crease,  ///< the curve rule along a sharp edge
+};
 
-const char* to_string(VertexRule);
+/// The rule's name.
+/// \param rule the rule.
+/// \return "smooth", "dart", "crease" or "corner", a static string.
+const char* to_string(VertexRule rule) noexcept;
 
 /// The weights of one smoothing operator B_{alpha,beta} of Chen and
 /// Prautzsch's generalized Catmull-Clark schemes (2012, Figure 1.3): an
@@ -49,25 +56,28 @@ struct SmoothingWeights {
     constant,       ///< alpha, beta below
     catmull_clark,  ///< Catmull-Clark's: alpha(m) = 1 - 3/m, beta(m) = 2/m
   };
+  /// The weights at one valence, overriding the rule there.
   struct AtValence {
-    int valence = 4;
-    double alpha = 0.25;
-    double beta = 0.5;
+    int valence = 4;     ///< the interior valence m, >= 3
+    double alpha = 0.25;  ///< alpha(m)
+    double beta = 0.5;    ///< beta(m)
   };
-  Rule rule = Rule::constant;
-  double alpha = 0.25;
-  double beta = 0.5;
-  std::vector<AtValence> valences = {};
+  Rule rule = Rule::constant;  ///< the weights at valences not listed
+  double alpha = 0.25;         ///< Rule::constant: alpha at every valence not listed
+  double beta = 0.5;           ///< Rule::constant: beta at every valence not listed
+  std::vector<AtValence> valences = {};  ///< per-valence overrides (the first entry for a valence applies)
 
-  /// alpha(m) and beta(m).
-  std::pair<double, double> at(int m) const;
+  /// alpha(m) and beta(m): the entry of `valences` for m, else the rule's.
+  /// \param m the interior valence.
+  /// \return the pair (alpha(m), beta(m)).
+  std::pair<double, double> at(int m) const noexcept;
 };
 
 /// The tension families (Butterfly, Kobbelt): the tension w. Butterfly's
 /// 1/16 (Dyn, Levin and Gregory 1990) reproduces cubic polynomials on
 /// regular meshes.
 struct TensionParameters {
-  double tension = 1.0 / 16.0;
+  double tension = 1.0 / 16.0;  ///< the tension w; must be finite (check_parameters())
 };
 
 /// Generalized Catmull-Clark schemes (rules/generalized_catmull_clark.h):
@@ -75,7 +85,8 @@ struct TensionParameters {
 /// rounded down: one entry for all of them, or r entries (none for n = 2).
 /// Change the degree with set_degree(), which also sets the split.
 struct DegreeParameters {
-  int degree = 3;
+  int degree = 3;  ///< the degree n, >= 2
+  /// The weights of B_1 .. B_r: one entry for all of them, or r entries.
   std::vector<SmoothingWeights> smoothing = {};
 };
 
@@ -95,7 +106,7 @@ enum class Quasi48Boundary {
 
 /// Quasi 4-8 (rules/quasi_4_8.h): its boundary treatment.
 struct Quasi48Parameters {
-  Quasi48Boundary boundary = Quasi48Boundary::fixed;
+  Quasi48Boundary boundary = Quasi48Boundary::fixed;  ///< the boundary treatment
 };
 
 /// A family's parameters: none, a tension, a degree with its smoothing
@@ -105,12 +116,28 @@ struct Quasi48Parameters {
 /// from the LevelView.
 using SchemeParameters = std::variant<std::monostate, TensionParameters, DegreeParameters, Quasi48Parameters>;
 
-/// The tension of a tension family, or nullptr (const and mutable).
-inline const TensionParameters* tension_parameters(const SchemeParameters& p) { return std::get_if<TensionParameters>(&p); }
-inline TensionParameters* tension_parameters(SchemeParameters& p) { return std::get_if<TensionParameters>(&p); }
-/// The degree and smoothing of a generalized Catmull-Clark scheme, or nullptr.
-inline const DegreeParameters* degree_parameters(const SchemeParameters& p) { return std::get_if<DegreeParameters>(&p); }
-inline DegreeParameters* degree_parameters(SchemeParameters& p) { return std::get_if<DegreeParameters>(&p); }
+/// The tension of a tension family.
+/// \param p a scheme's parameters.
+/// \return the TensionParameters \p p holds, or nullptr.
+inline const TensionParameters* tension_parameters(const SchemeParameters& p) noexcept {
+  return std::get_if<TensionParameters>(&p);
+}
+/// The tension of a tension family, to modify.
+/// \param p a scheme's parameters.
+/// \return the TensionParameters \p p holds, or nullptr.
+inline TensionParameters* tension_parameters(SchemeParameters& p) noexcept {
+  return std::get_if<TensionParameters>(&p);
+}
+/// The degree and smoothing of a generalized Catmull-Clark scheme.
+/// \param p a scheme's parameters.
+/// \return the DegreeParameters \p p holds, or nullptr.
+inline const DegreeParameters* degree_parameters(const SchemeParameters& p) noexcept {
+  return std::get_if<DegreeParameters>(&p);
+}
+/// The degree and smoothing of a generalized Catmull-Clark scheme, to modify.
+/// \param p a scheme's parameters.
+/// \return the DegreeParameters \p p holds, or nullptr.
+inline DegreeParameters* degree_parameters(SchemeParameters& p) noexcept { return std::get_if<DegreeParameters>(&p); }
 
 /// What a mask may look at: the parent level's topology (not its positions)
 /// and the sharpness of its edges.
@@ -126,8 +153,12 @@ inline DegreeParameters* degree_parameters(SchemeParameters& p) { return std::ge
 /// topology.edge_vertices(e)[i]), and is_sharp_at(e, v) asks whether the
 /// child at v's end is sharp. Masks ask is_sharp_at where they know the vertex.
 struct LevelView {
-  const MeshTopology& topology;
+  const MeshTopology& topology;  ///< the parent level's topology
+  /// Per edge, its sharpness on this level (subdiv::LevelCreasing); empty:
+  /// no edge is sharp.
   std::span<const double> edge_sharpness;
+  /// Sharpness an edge must exceed to be sharp for the rule evaluated: 0
+  /// for this level's rule, 1 for the rule one level down.
   double sharp_above = 0.0;
   /// Piecewise-smooth rules only (empty otherwise): per vertex, the angle
   /// alpha each of its sectors spans (pi at crease and boundary vertices, the
@@ -137,7 +168,9 @@ struct LevelView {
   std::span<const double> sector_angle = {};
   std::span<const double> child_end_sharpness = {};  ///< empty: is_sharp_at == is_sharp
   SchemeParameters parameters = {};  ///< the refined scheme's
-  /// The tension of a tension family's masks (its parameters hold one).
+  /// The tension of a tension family's masks.
+  /// \return the tension w of `parameters`.
+  /// \throws std::bad_variant_access if `parameters` hold no TensionParameters.
   double tension() const { return std::get<TensionParameters>(parameters).tension; }
   /// The parent's level, 0 for the control mesh: rules that alternate
   /// between steps (sqrt3's boundary) read its parity.
@@ -154,11 +187,22 @@ struct LevelView {
   /// (SchemeMasks::held_vertices); empty where the masks declare none.
   std::span<const char> held = {};
 
-  bool is_sharp(Index e) const {
+  /// Whether edge \p e is sharp for the rule being evaluated.
+  /// \param e an edge of `topology`.
+  /// \return true where its sharpness exceeds `sharp_above`.
+  /// \pre \p e is in [0, edge count) (unchecked).
+  bool is_sharp(Index e) const noexcept {
     return !edge_sharpness.empty() && edge_sharpness[static_cast<std::size_t>(e)] > sharp_above;
   }
-  /// Whether edge e is sharp for the rule at its end vertex v.
-  bool is_sharp_at(Index e, Index v) const {
+  /// Whether edge e is sharp for the rule at its end vertex v: with
+  /// `child_end_sharpness`, whether e's child at v is sharp one level down;
+  /// without, is_sharp(e).
+  /// \param e an edge of `topology`.
+  /// \param v one of the ends of \p e.
+  /// \return true where the edge is sharp at that end.
+  /// \pre \p e is in [0, edge count) and \p v is one of its ends (unchecked; any
+  ///   other vertex reads the second end).
+  bool is_sharp_at(Index e, Index v) const noexcept {
     if (child_end_sharpness.empty()) return is_sharp(e);
     const std::size_t end = topology.edge_vertices(e)[0] == v ? 0 : 1;
     return child_end_sharpness[2 * static_cast<std::size_t>(e) + end] > 0.0;
@@ -176,10 +220,11 @@ struct LevelView {
 /// child level it has just computed; the stencil recorder substitutes their
 /// face masks, so recorded tables are over parent vertices only. A scheme
 /// whose face points are made from new edge points (Kobbelt's) weights those
-/// instead, the other way round (Scheme::face_points_read_edge_points).
+/// instead, the other way round (SchemeMasks::face_points_read_edge_points).
 class MaskBuilder {
  public:
-  void clear() {
+  /// Removes every entry and resets the scale to 1; keeps the capacity.
+  void clear() noexcept {
     vertices_.clear();
     weights_.clear();
     face_points_.clear();
@@ -188,22 +233,39 @@ class MaskBuilder {
     edge_point_weights_.clear();
     scale_ = 1.0;
   }
+  /// Adds a weight on a parent vertex (entries for the same vertex add up
+  /// when applied).
+  /// \param vertex a parent vertex.
+  /// \param weight the weight, multiplied by the current scale.
+  /// \throws std::bad_alloc if memory runs out.
   void add(Index vertex, double weight) {
     vertices_.push_back(vertex);
     weights_.push_back(scale_ * weight);
   }
   /// Weight on the new face point of parent face `face` (quad split only).
+  /// \param face a parent face.
+  /// \param weight the weight, multiplied by the current scale.
+  /// \throws std::bad_alloc if memory runs out.
   void add_face_point(Index face, double weight) {
     face_points_.push_back(face);
     face_point_weights_.push_back(scale_ * weight);
   }
   /// Weight on the new edge point of parent edge `edge` (quad split, face
-  /// masks of schemes with Scheme::face_points_read_edge_points only).
+  /// masks of schemes with SchemeMasks::face_points_read_edge_points only).
+  /// \param edge a parent edge.
+  /// \param weight the weight, multiplied by the current scale.
+  /// \throws std::bad_alloc if memory runs out.
   void add_edge_point(Index edge, double weight) {
     edge_points_.push_back(edge);
     edge_point_weights_.push_back(scale_ * weight);
   }
-  void set_scale(double scale) { scale_ = scale; }
+  /// Sets the factor applied to the weights added from now on.
+  /// \param scale the factor (1 after construction and clear()).
+  void set_scale(double scale) noexcept { scale_ = scale; }
+  /// Reserves room for this many entries of each kind.
+  /// \param entries the entries per kind.
+  /// \throws std::length_error if \p entries exceeds the vectors' max_size().
+  /// \throws std::bad_alloc if memory runs out.
   void reserve(std::size_t entries) {
     vertices_.reserve(entries);
     weights_.reserve(entries);
@@ -212,13 +274,27 @@ class MaskBuilder {
     edge_points_.reserve(entries);
     edge_point_weights_.reserve(entries);
   }
-  std::span<const Index> vertices() const { return vertices_; }
-  std::span<const double> weights() const { return weights_; }
-  std::span<const Index> face_points() const { return face_points_; }
-  std::span<const double> face_point_weights() const { return face_point_weights_; }
-  std::span<const Index> edge_points() const { return edge_points_; }
-  std::span<const double> edge_point_weights() const { return edge_point_weights_; }
-  std::size_t size() const { return vertices_.size() + face_points_.size() + edge_points_.size(); }
+  /// The parent vertices added, in order.
+  /// \return a view valid until the builder is next modified.
+  std::span<const Index> vertices() const noexcept { return vertices_; }
+  /// The scaled weights of vertices(), entry for entry.
+  /// \return a view valid until the builder is next modified.
+  std::span<const double> weights() const noexcept { return weights_; }
+  /// The parent faces whose new face points were added, in order.
+  /// \return a view valid until the builder is next modified.
+  std::span<const Index> face_points() const noexcept { return face_points_; }
+  /// The scaled weights of face_points(), entry for entry.
+  /// \return a view valid until the builder is next modified.
+  std::span<const double> face_point_weights() const noexcept { return face_point_weights_; }
+  /// The parent edges whose new edge points were added, in order.
+  /// \return a view valid until the builder is next modified.
+  std::span<const Index> edge_points() const noexcept { return edge_points_; }
+  /// The scaled weights of edge_points(), entry for entry.
+  /// \return a view valid until the builder is next modified.
+  std::span<const double> edge_point_weights() const noexcept { return edge_point_weights_; }
+  /// The entries of all three kinds.
+  /// \return vertices().size() + face_points().size() + edge_points().size().
+  std::size_t size() const noexcept { return vertices_.size() + face_points_.size() + edge_points_.size(); }
 
  private:
   std::vector<Index> vertices_;
@@ -230,8 +306,16 @@ class MaskBuilder {
   double scale_ = 1.0;
 };
 
+/// Quad, sqrt3 and sqrt2 splits: adds to `mask` the weights of the face
+/// point of parent face `face`.
 using FaceMask = void (*)(const LevelView& level, Index face, MaskBuilder& mask);
+/// Primal splits: adds to `mask` the weights of the edge point of parent
+/// edge `edge` under `rule` (the engine blends the two rules of a
+/// semi-sharp edge).
 using EdgeMask = void (*)(const LevelView& level, Index edge, EdgeRule rule, MaskBuilder& mask);
+/// Splits with vertex points (primal, identity, sqrt3, sqrt2): adds to
+/// `mask` the weights of the vertex point of parent vertex `vertex` under
+/// `rule`.
 using VertexMask = void (*)(const LevelView& level, Index vertex, VertexRule rule, MaskBuilder& mask);
 /// Dual split: the child vertex of face corner `corner`.
 using CornerMask = void (*)(const LevelView& level, Index corner, MaskBuilder& mask);
@@ -276,7 +360,7 @@ using StepList = std::vector<Scheme> (*)(const SchemeParameters& parameters);
 /// Which published a-priori depth bound covers a scheme's regular part
 /// (depth/depth_bound.h); every other scheme's bound comes from the analysis.
 enum class PaperDepthBound : std::uint8_t {
-  none,
+  none,                 ///< no published bound: the analysis gives it
   loop_theorem_3,       ///< Loop's rules with Loop's beta
   cheng_catmull_clark,  ///< Catmull-Clark
   doo_sabin_theorem_5,  ///< Doo-Sabin's rules with Doo's boundary
@@ -312,9 +396,9 @@ struct SchemeTraits {
 /// The masks that make one level's child vertices (which ones a split
 /// needs: topology/split.h).
 struct SchemeMasks {
-  FaceMask face_point = nullptr;      ///< quad and sqrt3 splits
+  FaceMask face_point = nullptr;      ///< quad, sqrt3 and sqrt2 splits
   EdgeMask edge_point = nullptr;      ///< primal splits
-  VertexMask vertex_point = nullptr;  ///< primal splits
+  VertexMask vertex_point = nullptr;  ///< primal, identity, sqrt3 and sqrt2 splits
   CornerMask corner_point = nullptr;  ///< dual split only
   BoundaryPointMask boundary_point = nullptr;  ///< dual split, sqrt3 split
   /// The curve scheme (curves/curve_scheme.h) whose masks the boundary and
@@ -338,8 +422,8 @@ struct SchemeMasks {
 /// weights. Declared where the scheme's masks at interior vertices of valence
 /// 4 with no sharp edge are this product (a test derives it from them).
 struct RegularGrid {
-  std::array<double, 3> even;
-  std::array<double, 2> odd;
+  std::array<double, 3> even;  ///< weights on coarse points i-1, i, i+1 of fine point 2i
+  std::array<double, 2> odd;   ///< weights on coarse points i, i+1 of fine point 2i+1
 };
 
 /// A triangle-split scheme's rule on regular regions (interior vertices of
@@ -349,7 +433,10 @@ struct RegularGrid {
 /// `far` times each of the two vertices opposite it. Declared where the
 /// scheme's masks there are these (a test derives them from the masks).
 struct RegularTriangleGrid {
-  double centre, ring, near, far;
+  double centre;  ///< vertex point: weight on the vertex itself
+  double ring;    ///< vertex point: weight on each of its six neighbours
+  double near;    ///< edge point: weight on each end of the edge
+  double far;     ///< edge point: weight on each of the two vertices opposite the edge
 };
 
 /// Shortcuts of the fast path (refine()), each held to the masks by tests.
@@ -387,9 +474,9 @@ struct Scheme {
   std::string_view name = {};      ///< as users type it
   std::string_view summary = {};   ///< one line
   std::string_view citation = {};  ///< the paper the rules come from
-  SplitRule split = SplitRule::quad;
-  SchemeTraits traits = {};
-  SchemeMasks masks = {};
+  SplitRule split = SplitRule::quad;  ///< how a level's faces are split (a composite's overall split)
+  SchemeTraits traits = {};          ///< what the scheme takes and how its levels repeat
+  SchemeMasks masks = {};            ///< the masks of one step
   /// Composite schemes (generalized Catmull-Clark, midpoint, quasi 4-8): one
   /// level is these steps in turn: a split of the level's parent (R, a quad
   /// split; quasi 4-8's bisection), smoothing steps (identity splits of its
@@ -401,31 +488,56 @@ struct Scheme {
   /// Closed-form limit masks for the scheme's standard rules, or nullptr:
   /// limit positions then use the masks the analysis reads off the rules.
   LimitMaskFunction limit_masks = nullptr;
-  FastPath fast_path = {};
+  FastPath fast_path = {};  ///< shortcuts of refine(); empty: the masks everywhere
+  /// The family's parameters (the registered scheme's defaults); masks read
+  /// them from LevelView::parameters.
   SchemeParameters parameters = {};
   /// The family's own parameter check (ParameterCheck); nullptr: none.
   ParameterCheck parameter_check = nullptr;
 };
 
 /// Whether the scheme's masks read a tension (the CLI's --tension).
-inline bool takes_tension(const Scheme& scheme) { return tension_parameters(scheme.parameters) != nullptr; }
+/// \param scheme the scheme.
+/// \return true where its parameters hold TensionParameters.
+inline bool takes_tension(const Scheme& scheme) noexcept { return tension_parameters(scheme.parameters) != nullptr; }
 
-/// Throws ParameterError unless the scheme's parameters are valid: a finite
-/// tension where the masks read it, and the family's own check. Every
-/// refinement entry point calls it.
+/// Checks that the scheme's parameters are valid: a finite tension where
+/// the masks read it, and the family's own check (Scheme::parameter_check).
+/// Every refinement entry point calls it.
+/// \param scheme the scheme, possibly a copy with changed parameters.
+/// \throws ParameterError if a parameter is out of range (the message names
+///   the scheme and the parameter).
+/// \throws std::bad_alloc if memory runs out.
 void check_parameters(const Scheme& scheme);
 
 /// The limit at a boundary (or crease) vertex along the curve, as weights on
 /// (before, at, after): limit_at_point() of the scheme's boundary_curve.
-/// Throws InvalidInputError for a scheme that declares none.
+/// \param scheme the scheme.
+/// \return the three weights; all 0 where the curve's limit mask is not
+///   known (CurveScheme::limit empty).
+/// \throws InvalidInputError if \p scheme declares no boundary_curve, or its
+///   curve's limit mask reaches beyond the two neighbours.
+/// \throws std::bad_alloc if memory runs out.
 std::array<double, 3> boundary_vertex_limit(const Scheme& scheme);
 
 /// Every scheme, in the order `subdiv schemes` lists them.
+/// \return a view of a static array, valid for the program's lifetime.
+/// \throws std::bad_alloc if memory runs out on the first call, which builds
+///   the registered schemes.
 std::span<const Scheme* const> all_schemes();
+
 /// The scheme every command uses when none is named: Catmull-Clark, which
 /// takes any polygon mesh.
+/// \return catmull_clark_scheme().
+/// \throws std::bad_alloc if memory runs out on the first call, which builds
+///   the scheme.
 const Scheme& default_scheme();
-/// The scheme with this name, or nullptr.
+
+/// The registered scheme with this name (Scheme::name, as users type it).
+/// \param name the name, compared exactly.
+/// \return the scheme, or nullptr where none has the name.
+/// \throws std::bad_alloc if memory runs out on the first call, which builds
+///   the registered schemes.
 const Scheme* find_scheme(std::string_view name);
 
 }  // namespace subdiv
