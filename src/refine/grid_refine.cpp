@@ -144,6 +144,7 @@ std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology&
       !covers_level(level, t, options, levels, 4))
     return std::nullopt;
   const Index nf = t.face_count();
+  if (nf == 0) return std::nullopt;  // nothing to plan; the masks return the empty mesh
   GridPlan plan{.topology = t, .levels = levels, .n = 1 << levels};
   plan.counts.push_back({nf, t.edge_count(), t.vertex_count()});
   for (int l = 0; l < levels; ++l) plan.counts.push_back(plan.counts.back().child());

@@ -137,7 +137,7 @@ struct TrianglePlan {
 std::optional<TrianglePlan> plan_triangles(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                            const RefineOptions& options, int levels) {
   if (!scheme.fast_path.regular_triangle_grid || scheme.split != SplitRule::triangle || scheme.steps ||
-      !covers_level(level, t, options, levels, 3))
+      !covers_level(level, t, options, levels, 3) || t.face_count() == 0)
     return std::nullopt;
   std::optional<TriangleLevel> start = triangle_level(t);
   if (!start) return std::nullopt;

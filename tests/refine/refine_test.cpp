@@ -244,6 +244,25 @@ TEST(Refine, RejectsWhatItCannotRefine) {
   EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), levels(-1)), InvalidInputError);
 }
 
+TEST(Refine, EmptyMeshGivesEmptyResultsForEveryScheme) {
+  // Found by the Python module's property test: the grid paths divided by
+  // the face count (SIGFPE) when the stencil table of an empty mesh was built.
+  const PolygonMesh empty;
+  for (const Scheme* scheme : all_schemes()) {
+    for (const bool grids : {true, false}) {
+      RefineOptions options;
+      options.levels = 2;
+      options.regular_grids = grids;
+      try {
+        EXPECT_EQ(refine(empty, *scheme, options).face_count(), 0) << scheme->name;
+        EXPECT_EQ(refine_stencil_table(empty, *scheme, options).row_count(), 0) << scheme->name;
+      } catch (const Error&) {
+        // A typed refusal is an answer too; a crash is not.
+      }
+    }
+  }
+}
+
 TEST(Refine, RefusesDoubledTrianglesWhereTheSplitCannotIndexTheResult) {
   // Found by fuzz_pipeline: two triangles on the same three vertices (a
   // closed mesh of two faces) are valid, but the triangle, sqrt3 and quasi

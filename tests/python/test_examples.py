@@ -1,0 +1,38 @@
+"""The Python examples run and print what they promise."""
+
+import subprocess
+import sys
+
+from conftest import MESHES, SOURCE_DIR
+
+EXAMPLES = SOURCE_DIR / "examples" / "python"
+
+
+def run(name, *arguments):
+    done = subprocess.run([sys.executable, str(EXAMPLES / name), *map(str, arguments)], capture_output=True,
+                          text=True)
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+def test_compare_schemes(tmp_path):
+    out = run("compare_schemes.py", MESHES / "cube.obj", tmp_path / "cube")
+    assert "catmull-clark" in out and "    386 vertices     384 faces" in out  # 6 * 4^3 faces, V = F + 2
+    assert "loop" in out and "refused" in out
+    assert (tmp_path / "cube_catmull-clark.obj").exists()
+
+
+def test_animate_with_stencils():
+    out = run("animate_with_stencils.py", MESHES / "spot_control_mesh.obj")
+    assert out.count("largest difference from refining again") == 3
+
+
+def test_spectrum_table():
+    out = run("spectrum_table.py", "loop")
+    # Loop at valence 6: lambda_1 = 3/8 + cos(60 deg)/4 = 0.5.
+    assert "   6   0.500000   0.500000" in out
+
+
+def test_depth_for_accuracy():
+    out = run("depth_for_accuracy.py", MESHES / "tetrahedron.obj", "loop", 1e-3)
+    assert "a priori depth" in out and "adaptive:" in out
