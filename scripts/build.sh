@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Configures and builds subdiv. Usage: scripts/build.sh [--sanitize | --tool] [extra cmake args]
 #   default:     build/       Release, tests + examples + benchmarks
-#   --tool:      build/       Release, the subdiv program only (the demo: no tests or benchmarks compiled)
+#   --tool:      build/       Release, the subdiv program and the Python module (the demo: no tests or
+#                             benchmarks compiled)
 #   --sanitize:  build-asan/  -O1 with line tables, AddressSanitizer + UBSan, tests only
 # With CI=true, compiler warnings are errors.
 set -euo pipefail
@@ -12,7 +13,7 @@ targets=()
 args=(-DCMAKE_BUILD_TYPE=Release -DSUBDIV_BUILD_TESTS=ON -DSUBDIV_BUILD_EXAMPLES=ON -DSUBDIV_BUILD_BENCHMARKS=ON)
 if [ "${1:-}" = "--tool" ]; then
   shift
-  targets=(--target subdiv)
+  targets=(--target subdiv subdiv_python)
 elif [ "${1:-}" = "--sanitize" ]; then
   shift
   build_dir=build-asan

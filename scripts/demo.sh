@@ -7,12 +7,12 @@
 # Catmull-Clark, the Butterfly schemes and Doo-Sabin with pictures, refines
 # the L-shaped patch with the standard and the piecewise-smooth boundary
 # rules, and refines Spot to an accuracy (a priori depth, adaptive
-# refinement). Results under out/.
+# refinement), and runs one Python example. Results under out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/setup.sh
-bash scripts/build.sh --tool  # the program only: no tests or benchmarks compiled
+bash scripts/build.sh --tool  # the program and the Python module: no tests or benchmarks compiled
 subdiv=build/tools/subdiv/subdiv
 mkdir -p out
 for mesh in data/meshes/*.obj; do
@@ -63,4 +63,6 @@ echo "== subdiv analyze -s catmull-clark --boundary -k 1..6 (standard, then piec
 echo "== a priori depth and adaptive refinement of Spot to 0.005"
 "$subdiv" depth data/meshes/spot_control_mesh.obj -s catmull-clark --eps 0.005 --verify
 "$subdiv" adaptive data/meshes/spot_control_mesh.obj -s catmull-clark --eps 0.005 -o out/spot_adaptive.obj
+echo "== from Python: stencils built once, three poses, each checked against refining again"
+PYTHONPATH=build/python /usr/bin/python3 examples/python/animate_with_stencils.py data/meshes/spot_control_mesh.obj
 echo "demo: results in out/"
