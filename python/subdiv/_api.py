@@ -54,19 +54,32 @@ class Level:
     (kinds index ORIGIN_KINDS; parents index the parent level's vertices,
     edges, faces or corners), or None for the control mesh."""
 
-    __slots__ = ("mesh", "level", "_core")
+    __slots__ = ("mesh", "level", "_core", "_origins")
 
     def __init__(self, core):
         self._core = core
+        self._origins = None
         self.mesh = Mesh._wrap(core.mesh)
         self.level = core.level
 
     @property
     def origins(self):
-        return self._core.origins
+        if self._core is not None:  # computed on first use, then kept
+            self._origins = self._core.origins
+            self._core = None
+        return self._origins
+
+    def __reduce__(self):
+        return (_level_from_state, (self.mesh, self.level, self.origins))
 
     def __repr__(self):
         return f"subdiv.Level({self.level}: {self.mesh!r})"
+
+
+def _level_from_state(mesh, level, origins):
+    restored = Level.__new__(Level)
+    restored.mesh, restored.level, restored._core, restored._origins = mesh, level, None, origins
+    return restored
 
 
 class Hierarchy:

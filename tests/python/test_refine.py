@@ -189,3 +189,23 @@ def test_ctrl_c_stops_between_levels():
     # Level 6 alone costs about four times levels 0-5: stopping between
     # levels ends well before the whole refinement would.
     assert time.perf_counter() - start < 3 * full
+
+
+def test_results_pickle():
+    # Results travel to other processes (a distributed engine's workers).
+    import pickle
+
+    mesh = subdiv.read(MESHES / "cube.obj")
+    h = subdiv.refine(mesh, "catmull-clark", 2, keep="all")
+    again = pickle.loads(pickle.dumps(h))
+    assert [l.level for l in again.levels] == [0, 1, 2]
+    np.testing.assert_array_equal(again.mesh.points, h.mesh.points)
+    np.testing.assert_array_equal(again.levels[1].origins[1], h.levels[1].origins[1])
+    assert again.levels[0].origins is None
+    lim = pickle.loads(pickle.dumps(subdiv.limit(mesh, "catmull-clark")))
+    np.testing.assert_array_equal(lim.normals, subdiv.limit(mesh, "catmull-clark").normals)
+    original = subdiv.adaptive(mesh, "catmull-clark", 1e-2)
+    adaptive = pickle.loads(pickle.dumps(original))
+    assert adaptive.mesh.vertex_count == len(adaptive.source_levels) == original.mesh.vertex_count
+    np.testing.assert_array_equal(adaptive.mesh.points, original.mesh.points)
+    np.testing.assert_array_equal(adaptive.distances, original.distances)
