@@ -42,15 +42,26 @@ py::object origins_of(const PyLevel& level) {
 std::vector<PyLevel> refine_levels(const PolygonMesh& mesh, const std::string& scheme_name, int levels,
                                    const py::dict& options, const py::dict& parameters, bool keep_all) {
   const Scheme scheme = scheme_with(scheme_name, parameters);
-  RefineOptions refine = refine_options(options);
-  refine.levels = levels;
-  interrupt_between_levels(refine);
+  RefineOptions run = refine_options(options);
+  run.levels = levels;
+  interrupt_between_levels(run);
+  std::vector<PyLevel> kept;
+  if (!keep_all) {
+    // The finest level alone: refine() itself, with its grid path for the
+    // regular regions (which makes no per-level split maps, so no origins).
+    PolygonMesh finest;
+    {
+      py::gil_scoped_release release;
+      finest = subdiv::refine(mesh, scheme, run);
+    }
+    kept.push_back({std::make_shared<PolygonMesh>(std::move(finest)), levels, std::nullopt});
+    return kept;
+  }
   Hierarchy hierarchy;
   {
     py::gil_scoped_release release;
-    hierarchy = refine_hierarchy(mesh, scheme, refine, keep_all ? KeepLevels::all : KeepLevels::last);
+    hierarchy = refine_hierarchy(mesh, scheme, run, KeepLevels::all);
   }
-  std::vector<PyLevel> kept;
   for (HierarchyLevel& level : hierarchy.levels)
     kept.push_back({std::make_shared<PolygonMesh>(std::move(level.mesh)), level.level, std::move(level.map)});
   return kept;

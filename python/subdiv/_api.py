@@ -104,8 +104,10 @@ class Hierarchy:
 def refine(mesh, scheme="catmull-clark", levels=1, keep="last", **keywords):
     """Refines mesh `levels` times with `scheme` and returns a Hierarchy.
 
-    keep: "last" (the finest level only, the least memory) or "all" (every
-    level, the control mesh first, each with its vertices' origins).
+    keep: "last" (the finest level only: the least memory and the fastest
+    path, regular regions refined as grids; no origins) or "all" (every
+    level, the control mesh first, each refined level with its vertices'
+    origins).
     Rule options: boundary ("edge-only", "edge-and-corner"; default: the
     mesh's tag), boundary_rules ("standard", "piecewise-smooth"),
     corner_angles ("fixed", "measured"), crease_method ("uniform",
