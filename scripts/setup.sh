@@ -14,6 +14,7 @@ packages=(
   libassimp-dev libosd-dev  # peers in bench/ (Assimp import, OpenSubdiv topology)
   python3  # the CLI test reads the --json documents
   python3-dev pybind11-dev python3-numpy python3-scipy python3-pytest  # the Python module and its tests
+  python3-dask python3-distributed  # the Python example on a Dask cluster (and its test)
 )
 
 for option in "$@"; do

@@ -36,3 +36,18 @@ def test_spectrum_table():
 def test_depth_for_accuracy():
     out = run("depth_for_accuracy.py", MESHES / "tetrahedron.obj", "loop", 1e-3)
     assert "a priori depth" in out and "adaptive:" in out
+
+
+def test_refine_folder_with_dask(tmp_path):
+    # Two worker processes: meshes go out and hierarchies come back pickled;
+    # a scheme's refusal comes back as the library's exception.
+    import numpy as np
+    import subdiv
+
+    out = run("refine_folder_with_dask.py", MESHES, "loop", 1, tmp_path)
+    assert "cube.obj: refused: loop needs a triangle mesh" in out
+    for name in ("tetrahedron", "elephant"):
+        remote = subdiv.read(tmp_path / f"{name}_loop1.obj")
+        local = subdiv.refine(subdiv.read(MESHES / f"{name}.obj"), "loop", 1).mesh
+        np.testing.assert_array_equal(remote.points, local.points)
+        np.testing.assert_array_equal(remote.face_indices, local.face_indices)
