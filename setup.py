@@ -37,6 +37,7 @@ setup(
     version=VERSION,
     packages=["subdiv"],
     package_dir={"subdiv": "python/subdiv"},
+    package_data={"subdiv": ["__init__.pyi", "py.typed"]},
     ext_modules=[Extension("subdiv._subdiv", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
 )
