@@ -40,4 +40,6 @@ setup(
     package_data={"subdiv": ["__init__.pyi", "py.typed"]},
     ext_modules=[Extension("subdiv._subdiv", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
+    # Beside the project's own build/ (CMake's), not inside it.
+    options={"build": {"build_base": "build-python"}},
 )

@@ -48,7 +48,13 @@ cmake --build "$build_dir" --parallel "$(nproc)"
 
 # Seeds: small files of each format (under 64 KiB keeps the runs fast).
 seed_files() {  # extension
-  find fuzz/seeds data/meshes tests/data ../shared/data/meshes -type f -iname "*.$1" -size -64k 2>/dev/null | sort
+  # Only the folders that exist: find fails on a missing one, and under
+  # pipefail that would end the script (../shared is absent outside the team's machines).
+  local dirs=() dir
+  for dir in fuzz/seeds data/meshes tests/data ../shared/data/meshes; do
+    if [ -d "$dir" ]; then dirs+=("$dir"); fi
+  done
+  find "${dirs[@]}" -type f -iname "*.$1" -size -64k | sort
 }
 seeds="$(mktemp -d)"  # one per run, so that two runs side by side do not share it
 trap 'rm -rf "$seeds"' EXIT
