@@ -275,7 +275,7 @@ def write(mesh, path, ascii=False, tags=True, channels=True, hole_faces_as_faces
     temporary file renamed into place, so a failure leaves no partial file.
 
     ascii: PLY as text (default binary little-endian). tags: OBJ tag lines.
-    channels: OBJ uv, normal and colour. hole_faces_as_faces: PLY and OFF
+    channels: the uv, normal and colour channels (OBJ, PLY). hole_faces_as_faces: PLY and OFF
     write hole faces as ordinary faces (default: left out, with a note).
     threads: formatting workers (0: all cores; the bytes are the same).
     Returns the notes about data the format cannot hold."""

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <string>
 
 #include "large_buffers.h"
@@ -52,8 +53,15 @@ void StencilTable::append_rows(std::span<const Index> sizes, std::span<const Ind
                                std::span<const double> weights) {
   if (vertices.size() != weights.size()) throw InvalidInputError("stencil rows: vertex and weight counts differ");
   std::size_t total = 0;
-  for (const Index n : sizes) total += static_cast<std::size_t>(n);
+  for (std::size_t r = 0; r < sizes.size(); ++r) {
+    // A negative size would wrap the unsigned sum and could still match.
+    if (sizes[r] < 0) throw InvalidInputError("stencil rows: row " + std::to_string(r) + " has a negative size");
+    total += static_cast<std::size_t>(sizes[r]);
+  }
   if (total != vertices.size()) throw InvalidInputError("stencil rows: row sizes do not add up to the entries");
+  // The offsets are Index values: the table cannot hold more entries than that.
+  if (vertices_.size() + total > static_cast<std::size_t>(std::numeric_limits<Index>::max()))
+    throw InvalidInputError("stencil rows: more entries than a 32-bit index can address");
   for (std::size_t i = 0; i < vertices.size(); ++i)
     if (vertices[i] < 0 || vertices[i] >= source_count_)
       throw InvalidInputError("stencil row refers to vertex " + std::to_string(vertices[i]) + " outside [0, " +

@@ -86,7 +86,16 @@ std::vector<std::string> write_mesh(const PolygonMesh& mesh, const std::filesyst
   std::string data;
   switch (format) {
     case FileFormat::obj: data = format_obj(mesh, options, &warnings); break;
-    case FileFormat::ply: data = format_ply(mesh, options.ply_encoding, &warnings, options.threads); break;
+    case FileFormat::ply:
+      if (!options.write_channels && (!mesh.vertex_channels.empty() || !mesh.face_varying_channels.empty())) {
+        PolygonMesh bare = mesh;  // the channels left out, as asked
+        bare.vertex_channels.clear();
+        bare.face_varying_channels.clear();
+        data = format_ply(bare, options.ply_encoding, &warnings, options.threads);
+      } else {
+        data = format_ply(mesh, options.ply_encoding, &warnings, options.threads);
+      }
+      break;
     case FileFormat::off: data = format_off(mesh, &warnings, options.threads); break;
   }
   if (format != FileFormat::obj && !mesh.tags.empty() && options.write_tags)

@@ -56,4 +56,20 @@ TEST(StencilTable, IdentityAndErrors) {
   EXPECT_THROW(id.then(StencilTable(2)), InvalidInputError);
 }
 
+TEST(StencilTable, AppendRowsRefusesNegativeSizesAndLeavesTheTable) {
+  // Sizes {3, -1} add up to the two entries in an unsigned sum: the old
+  // check passed them and wrote a decreasing offset.
+  StencilTable t(2);
+  const Index sizes[] = {3, -1};
+  const Index vertices[] = {0, 1};
+  const double weights[] = {0.5, 0.5};
+  EXPECT_THROW(t.append_rows(sizes, vertices, weights), InvalidInputError);
+  EXPECT_EQ(t.row_count(), 0);
+  EXPECT_EQ(t.entry_count(), 0u);
+  const Index good[] = {1, 1};
+  t.append_rows(good, vertices, weights);
+  EXPECT_EQ(t.row_count(), 2);
+  EXPECT_EQ(t.offsets()[2], 2);
+}
+
 }  // namespace subdiv

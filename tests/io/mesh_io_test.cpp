@@ -99,6 +99,21 @@ TEST_F(MeshIoTest, HoleFacesLeftOutWhereTheFormatHasNoHoleTags) {
             6);  // OBJ keeps the faces with their tag
 }
 
+TEST_F(MeshIoTest, WriteChannelsFalseLeavesChannelsOutOfObjAndPly) {
+  PolygonMesh mesh = test::cube();
+  mesh.vertex_channels.push_back({"color", 3, std::vector<double>(24, 0.5)});
+  for (const char* name : {"m.obj", "m.ply"}) {
+    WriteOptions options;
+    EXPECT_TRUE(write_mesh(mesh, dir_ / name, options).empty()) << name;
+    EXPECT_NE(read_mesh(dir_ / name).mesh.find_vertex_channel("color"), nullptr) << name;
+    options.write_channels = false;
+    write_mesh(mesh, dir_ / name, options);
+    const MeshFile again = read_mesh(dir_ / name);
+    EXPECT_EQ(again.mesh.find_vertex_channel("color"), nullptr) << name;
+    EXPECT_EQ(again.mesh.positions, mesh.positions) << name;
+  }
+}
+
 TEST_F(MeshIoTest, PolylinesSurviveObjAndAreReportedLostElsewhere) {
   PolygonMesh mesh = test::cube();
   mesh.polylines = {{{0, 1, 2, 3}, true}, {{4, 5}, false}};

@@ -85,8 +85,9 @@ class StencilTable {
   /// \param vertices the rows' source vertices, concatenated.
   /// \param weights their weights, parallel to \p vertices.
   /// \throws InvalidInputError if \p vertices and \p weights differ in size,
-  ///         the sizes do not add up to that size, or a vertex lies outside
-  ///         [0, source_count()).
+  ///         a size is negative, the sizes do not add up to that size, the
+  ///         table would exceed what a 32-bit index addresses, or a vertex
+  ///         lies outside [0, source_count()).
   /// \throws std::bad_alloc if memory runs out.
   void append_rows(std::span<const Index> sizes, std::span<const Index> vertices, std::span<const double> weights);
   /// Reserves room for \p rows rows and \p entries entries in all, counting

@@ -61,8 +61,8 @@ enum class PlyEncoding {
 struct WriteOptions {
   PlyEncoding ply_encoding = PlyEncoding::binary_little_endian;  ///< PLY only
   bool write_tags = true;      ///< OBJ tag lines (the other formats have no place for tags)
-  /// OBJ: UVs, normals and colours (else no channel is written). PLY writes
-  /// the channels it has a place for whatever this says.
+  /// OBJ and PLY: the channels each has a place for (OBJ: UVs, normals and
+  /// colours; PLY: normals, UVs and colours); false writes none.
   bool write_channels = true;
   /// PLY and OFF have no place for hole tags: faces tagged as holes are left
   /// out (they are not part of the surface), with a note, unless this asks
