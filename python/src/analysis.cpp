@@ -77,13 +77,7 @@ std::string analyze_json(const std::string& scheme_name, const std::vector<int>&
 }
 
 std::string analyze_curve_json(const std::string& name, std::optional<double> tension) {
-  const CurveScheme* registered = find_curve_scheme(name);
-  if (registered == nullptr) throw InvalidInputError("unknown curve scheme '" + name + "'");
-  CurveScheme scheme = *registered;
-  if (tension) {
-    if (scheme.name != "four-point") throw InvalidInputError("tension: " + name + " takes no tension");
-    scheme = four_point_scheme(*tension);
-  }
+  const CurveScheme scheme = curve_scheme_with(name, tension);
   CurveAnalysis a;
   {
     py::gil_scoped_release release;

@@ -9,9 +9,11 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "subdiv/curves/curve_scheme.h"
 #include "subdiv/mesh/polygon_mesh.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/scheme.h"
@@ -59,6 +61,11 @@ py::array copy_of(const T* data, std::size_t rows, std::size_t columns = 0) {
 /// midpoint). Throws InvalidInputError for an unknown scheme or parameter,
 /// ParameterError for a value outside the scheme's range.
 Scheme scheme_with(const std::string& name, const py::dict& parameters);
+
+/// The registered curve scheme `name`, with four-point's tension where
+/// given. Throws InvalidInputError for an unknown name, or a tension for a
+/// scheme without one.
+CurveScheme curve_scheme_with(const std::string& name, std::optional<double> tension);
 
 /// The rule and run options shared by refine, stencils, limit, depth and
 /// adaptive, from the Python call's keywords (boundary, boundary_rules,

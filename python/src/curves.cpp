@@ -10,8 +10,6 @@
 
 namespace subdiv::python {
 
-namespace {
-
 CurveScheme curve_scheme_with(const std::string& name, std::optional<double> tension) {
   const CurveScheme* registered = find_curve_scheme(name);
   if (registered == nullptr) {
@@ -23,6 +21,8 @@ CurveScheme curve_scheme_with(const std::string& name, std::optional<double> ten
   if (registered->name != "four-point") throw InvalidInputError("tension: " + name + " takes no tension");
   return four_point_scheme(*tension);
 }
+
+namespace {
 
 // points: (n, 3) float64, checked by the package.
 py::array refine_curve(const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
