@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev libtbb-dev libcli11-dev libfmt-dev libfast-float-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcairo2-dev libfontconfig-dev  # subdiv analyze: --json output, plots
+  libosmesa6-dev  # subdiv render: Mesa's off-screen renderer
   libassimp-dev libosd-dev  # peers in bench/ (Assimp import, OpenSubdiv topology)
   python3  # the CLI test reads the --json documents
   python3-dev pybind11-dev python3-numpy python3-scipy python3-pytest  # the Python module and its tests

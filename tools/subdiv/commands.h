@@ -40,5 +40,6 @@ Command add_limit_command(CLI::App& app);
 Command add_analyze_command(CLI::App& app);
 Command add_depth_command(CLI::App& app);
 Command add_adaptive_command(CLI::App& app);
+Command add_render_command(CLI::App& app);
 
 }  // namespace subdiv::cli

@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   const Command analyze = add_analyze_command(app);
   const Command depth = add_depth_command(app);
   const Command adaptive = add_adaptive_command(app);
+  const Command render = add_render_command(app);
 
   // A first word that names no command: say which one was meant.
   if (argc > 1 && argv[1][0] != '-') {
@@ -99,6 +100,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("analyze")) return finish(analyze());
     if (app.got_subcommand("depth")) return finish(depth());
     if (app.got_subcommand("adaptive")) return finish(adaptive());
+    if (app.got_subcommand("render")) return finish(render());
     print_error("no command given (run 'subdiv --help' for usage)");
     return kExitBadInput;
   } catch (const subdiv::Error& e) {
