@@ -7,7 +7,8 @@
 # Catmull-Clark, the Butterfly schemes and Doo-Sabin with pictures, refines
 # the L-shaped patch with the standard and the piecewise-smooth boundary
 # rules, and refines Spot to an accuracy (a priori depth, adaptive
-# refinement), and runs one Python example. Results under out/.
+# refinement), and runs one Python example. Pictures (PNG) of the refined
+# surfaces. Results under out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -26,6 +27,7 @@ for mesh in data/meshes/*.obj; do
   fi
   "$subdiv" refine "$mesh" -s catmull-clark -l 2 -o "out/${name}_catmull_clark2.obj"
   "$subdiv" limit "$mesh" -s catmull-clark --normals -o "out/${name}_catmull_clark_limit.obj"
+  "$subdiv" render "$mesh" -s catmull-clark -l 3 --cage -o "out/${name}_catmull_clark3.png"
 done
 echo "== the cube and the tetrahedron with every surface scheme (4 levels)"
 for mesh in cube tetrahedron; do
@@ -34,6 +36,7 @@ for mesh in cube tetrahedron; do
     triangulate=()  # the schemes that read triangles get the triangulated mesh
     case "$scheme" in loop | butterfly | modified-butterfly | sqrt3 | interpolatory-sqrt3 | quasi-4-8) triangulate=(--triangulate) ;; esac
     "$subdiv" refine "data/meshes/$mesh.obj" -s "$scheme" "${triangulate[@]}" -l 4 -o "out/${mesh}_${scheme}4.obj"
+    "$subdiv" render "out/${mesh}_${scheme}4.obj" --size 400x400 -q -o "out/${mesh}_${scheme}4.png"
   done
 done
 # Kobbelt's interpolatory scheme reads quads: the cube, and the L (open, with corners).

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian packages subdiv needs to build, test and benchmark.
 # Idempotent: when everything is present it only runs dpkg-query and exits.
-# Usage: scripts/setup.sh [--fuzz] [--docs]
+# Usage: scripts/setup.sh [--fuzz] [--docs] [--browser]
 #   --fuzz: also clang and libFuzzer, for scripts/fuzz.sh
 #   --docs: also doxygen, for scripts/docs.sh (the API reference)
+#   --browser: also chromium and Node.js with npm (where no npm is on the
+#              PATH), for the comparison page's browser test
 set -euo pipefail
 
 packages=(
@@ -22,7 +24,11 @@ for option in "$@"; do
   case "$option" in
     --fuzz) packages+=(clang-14 libclang-rt-14-dev) ;;
     --docs) packages+=(doxygen) ;;
-    *) echo "setup: unknown option $option (--fuzz, --docs)" >&2; exit 2 ;;
+    --browser)
+      packages+=(chromium)
+      if ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi
+      ;;
+    *) echo "setup: unknown option $option (--fuzz, --docs, --browser)" >&2; exit 2 ;;
   esac
 done
 

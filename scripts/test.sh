@@ -4,10 +4,16 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash scripts/setup.sh
+bash scripts/setup.sh --browser
+# The browser test's driver (playwright-core) and the three.js the page
+# inlines, as viewer/package-lock.json pins them.
+if [ ! -f viewer/node_modules/.package-lock.json ] || [ viewer/package-lock.json -nt viewer/node_modules/.package-lock.json ]; then
+  (cd viewer && npm ci --ignore-scripts --no-audit --no-fund)
+fi
 bash scripts/build.sh "$@"
 build_dir=build
 if [ "${1:-}" = "--sanitize" ]; then build_dir=build-asan; fi
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp"
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 ctest --test-dir "$build_dir" --output-on-failure --parallel "$(nproc)"

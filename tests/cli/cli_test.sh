@@ -793,6 +793,50 @@ assert doc["bound_steps"] >= doc["uniform"]["steps"], doc
 ' <"$work/out" && pass || fail "adaptive --json: a distance over eps, or the bound below the measured depth"
 fi
 
+# render: a PNG of the asked size; the same command twice gives the same
+# bytes; two schemes give different pictures; bad options are one line.
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{printf "%dx%d", $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'; }
+if run render-cube 0 render "$meshes/cube.obj" -s catmull-clark -l 3 --size 320x240 -o "$work/cube_a.png"; then
+  stdout_has render-cube "wrote $work/cube_a.png: 320x240, catmull-clark, 3 levels"
+  stdout_has render-cube "shaded by limit normals"
+  [ "$(png_size "$work/cube_a.png")" = 320x240 ] && pass || fail "render-cube: PNG size $(png_size "$work/cube_a.png")"
+fi
+run render-cube-again 0 render "$meshes/cube.obj" -s catmull-clark -l 3 --size 320x240 -o "$work/cube_b.png" &&
+  { cmp -s "$work/cube_a.png" "$work/cube_b.png" && pass || fail "render: the same command gave different bytes"; }
+run render-cube-doo-sabin 0 render "$meshes/cube.obj" -s doo-sabin -l 3 --size 320x240 -o "$work/cube_ds.png" &&
+  { cmp -s "$work/cube_a.png" "$work/cube_ds.png" && fail "render: doo-sabin and catmull-clark gave the same picture" || pass; }
+run render-as-given 0 render "$meshes/l_shape.obj" --cage --wireframe --view -30,60 --background black -o "$work/l.png" &&
+  stdout_has render-as-given "the mesh as given"
+run render-json 0 render "$meshes/tetrahedron.obj" -s loop --json -o "$work/t.png" &&
+  python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["command"]=="render" and d["levels"]==3 and d["faces"]==256, d' <"$work/out" &&
+  pass || fail "render --json: unexpected document"
+for bad in "--size 0x10" "--size 12" "--view 10" "--view 0,95" "--background #12345" "--samples 9"; do
+  # shellcheck disable=SC2086
+  run "render $bad" 1 render "$meshes/cube.obj" $bad -o "$work/bad.png" && stderr_one_line "render $bad"
+done
+run render-not-png 1 render "$meshes/cube.obj" -o "$work/cube.jpg" && stderr_has render-not-png "render writes PNG images"
+[ ! -e "$work/bad.png" ] && [ ! -e "$work/cube.jpg" ] && pass || fail "render: a refused command wrote a file"
+run render-nonmanifold 1 render "$data/nonmanifold_edge.obj" -s loop -o "$work/nm.png" && stderr_one_line render-nonmanifold
+
+# compare: a self-contained page (three.js inlined: no external script or
+# module address), a PNG grid, the schemes asked for, and one-line errors.
+if run compare-tetra 0 compare "$meshes/tetrahedron.obj" -s loop,butterfly,catmull-clark -l 2 -o "$work/t.html" --png "$work/t.png" --size 120x100 --columns 2; then
+  stdout_has compare-tetra "the control mesh and 3 schemes at level 2"
+  grep -q 'src="http\|from "http\|import(.http' "$work/t.html" && fail "compare: the page loads something from the network" || pass
+  [ "$(grep -c '"title":"butterfly"' "$work/t.html")" = 1 ] && pass || fail "compare: no butterfly panel in the page"
+  # Two columns of 120 px (8 px gaps) for four pictures: 264 px wide.
+  [ "$(png_size "$work/t.png" | cut -dx -f1)" = 264 ] && pass || fail "compare --png: grid size $(png_size "$work/t.png")"
+fi
+run compare-all-tetra 0 compare "$meshes/tetrahedron.obj" -l 1 -o "$work/all.html" &&
+  { grep -q "kobbelt left out" "$work/err" && pass || fail "compare -s all: no warning for kobbelt on triangles"; }
+run compare-kobbelt-tetra 1 compare "$meshes/tetrahedron.obj" -s kobbelt -o "$work/k.html" &&
+  stderr_one_line compare-kobbelt-tetra
+run compare-unknown 1 compare "$meshes/cube.obj" -s loop,lop -o "$work/u.html" && stderr_has compare-unknown "unknown scheme 'lop'"
+run compare-twice 1 compare "$meshes/cube.obj" -s loop,loop -o "$work/u.html" && stderr_has compare-twice "listed twice"
+run compare-not-html 1 compare "$meshes/cube.obj" -o "$work/u.htm" && stderr_one_line compare-not-html
+run compare-bad-png 1 compare "$meshes/cube.obj" -o "$work/u.html" --png "$work/u.jpg" && stderr_one_line compare-bad-png
+[ ! -e "$work/u.html" ] && [ ! -e "$work/k.html" ] && pass || fail "compare: a refused command wrote a page"
+
 # Every command on every shared mesh that refine accepts (meshes under
 # 200 kB, one level), with -q: success, or one stderr line and exit 1; never
 # exit 2, a crash or a run past 30 s. Release builds only (SUBDIV_CLI_SWEEP:
@@ -801,7 +845,7 @@ if [ -d "$shared" ] && [ "${SUBDIV_CLI_SWEEP:-0}" = 1 ]; then
   while IFS= read -r -d '' mesh; do
     timeout 30 "$SUBDIV" refine "$mesh" -o "$work/sweep.obj" -q >/dev/null 2>"$work/err" || continue
     for args in "limit -o $work/sweep_limit.obj" "depth --eps 0.01" "adaptive --eps 0.05 --max-level 3 -o $work/sweep_adaptive.obj" \
-                "convert $work/sweep.ply" "info"; do
+                "convert $work/sweep.ply" "info" "render -l 1 --size 64x48 -o $work/sweep.png"; do
       set -- $args
       command=$1
       shift

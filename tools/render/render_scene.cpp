@@ -96,9 +96,30 @@ Scene surface_scene(const PolygonMesh& mesh, const std::vector<Vec3>& vertex_nor
                                                      static_cast<std::uint32_t>(face[i + 1])});
   }
   if (scene.triangles.empty()) throw InvalidInputError("nothing to render: the mesh has no face with three corners");
+  if (edges.flat) {
+    // A vertex per triangle corner, with the triangle's normal.
+    std::vector<std::uint32_t> corners;
+    corners.swap(scene.triangles);
+    for (std::size_t t = 0; t < corners.size(); t += 3) {
+      const Vec3& a = mesh.positions[corners[t]];
+      const Vec3 facet = cross(mesh.positions[corners[t + 1]] - a, mesh.positions[corners[t + 2]] - a);
+      const double length = norm(facet);
+      const Vec3 unit = length > 0.0 ? (1.0 / length) * facet : Vec3{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        const Vec3& p = mesh.positions[corners[t + k]];
+        scene.positions.insert(scene.positions.end(),
+                               {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+        scene.normals.insert(scene.normals.end(),
+                             {static_cast<float>(unit.x), static_cast<float>(unit.y), static_cast<float>(unit.z)});
+        scene.triangles.push_back(static_cast<std::uint32_t>(t + k));
+      }
+    }
+  }
 
-  scene.positions.resize(3 * n);
-  scene.normals.resize(3 * n);
+  if (!edges.flat) {
+    scene.positions.resize(3 * n);
+    scene.normals.resize(3 * n);
+  }
   const bool given = vertex_normals.size() == n;
   Vec3 low{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
            std::numeric_limits<double>::max()};
@@ -110,10 +131,11 @@ Scene surface_scene(const PolygonMesh& mesh, const std::vector<Vec3>& vertex_nor
       normal = dot(vertex_normals[v], normal) < 0.0 ? -1.0 * vertex_normals[v] : vertex_normals[v];
     const double length = std::sqrt(dot(normal, normal));
     if (length > 0.0) normal = (1.0 / length) * normal;
-    for (int k = 0; k < 3; ++k) {
-      scene.positions[3 * v + static_cast<std::size_t>(k)] = static_cast<float>(p[k]);
-      scene.normals[3 * v + static_cast<std::size_t>(k)] = static_cast<float>(normal[k]);
-    }
+    if (!edges.flat)
+      for (int k = 0; k < 3; ++k) {
+        scene.positions[3 * v + static_cast<std::size_t>(k)] = static_cast<float>(p[k]);
+        scene.normals[3 * v + static_cast<std::size_t>(k)] = static_cast<float>(normal[k]);
+      }
     if (!used[v]) continue;
     low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
     high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
@@ -134,6 +156,17 @@ void add_cage(Scene& scene, const PolygonMesh& cage) {
   for (const Vec3& p : cage.positions) {
     const Vec3 d = p - scene.centre;
     scene.radius = std::max(scene.radius, std::sqrt(dot(d, d)));
+  }
+}
+
+void frame_together(std::vector<Scene*> scenes) {
+  if (scenes.empty()) return;
+  const Vec3 centre = scenes.front()->centre;
+  double radius = 0.0;
+  for (const Scene* s : scenes) radius = std::max(radius, norm(s->centre - centre) + s->radius);
+  for (Scene* s : scenes) {
+    s->centre = centre;
+    s->radius = radius;
   }
 }
 

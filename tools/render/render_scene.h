@@ -38,6 +38,7 @@ struct Scene {
 struct EdgeStyle {
   bool wireframe = false;  // every edge
   bool features = true;    // boundaries, infinitely sharp and semi-sharp creases, in colour
+  bool flat = false;       // each face shaded by its own normal (a control mesh's facets)
 };
 
 /// The colours of the drawn edges (also the legend of docs/cli.md).
@@ -50,12 +51,19 @@ inline constexpr Rgb kCageColour{0.05F, 0.60F, 0.20F};
 /// The surface of `mesh` (faces tagged as holes left out; polygons as fans):
 /// `vertex_normals` where it holds one usable (non-zero) normal per vertex,
 /// turned to the side of the faces around it, else the area-weighted
-/// normal of the faces around the vertex. Throws InvalidInputError when
+/// normal of the faces around the vertex; with EdgeStyle::flat, each face by
+/// its own normal (its corners then get vertices of their own). Throws
+/// InvalidInputError when
 /// the mesh has no face to draw or more vertices than 32-bit indices hold.
 Scene surface_scene(const PolygonMesh& mesh, const std::vector<Vec3>& vertex_normals, const EdgeStyle& edges);
 
 /// Adds the edges of `cage` (the control mesh) to the scene, tagged edges
 /// in their feature colours, the others in kCageColour.
 void add_cage(Scene& scene, const PolygonMesh& cage);
+
+/// Gives every scene the same centre and radius: the smallest sphere about
+/// the first scene's centre that holds every scene's sphere, so that
+/// pictures drawn with the same view show the same part of space.
+void frame_together(std::vector<Scene*> scenes);
 
 }  // namespace subdiv::render

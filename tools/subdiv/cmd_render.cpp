@@ -14,12 +14,13 @@
 #include "commands.h"
 #include "memory_guard.h"
 #include "output_checks.h"
+#include "picture_options.h"
 #include "refinement_options.h"
+#include "surface_normals.h"
 #include "wording.h"
 #include "../render/png.h"
 #include "../render/rasterizer.h"
 #include "../render/render_scene.h"
-#include "subdiv/analysis/limit.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/file_io.h"
 #include "subdiv/io/mesh_io.h"
@@ -35,74 +36,20 @@ struct RenderCommandOptions {
   int levels = 3;
   RefinementOptionValues refinement;
   ReportOptionValues report;
-  std::string view = "30,20";
-  std::string size = "800x600";
-  std::string background = "#ffffff";
-  int samples = 2;
+  PictureOptionValues picture;
   bool wireframe = false;
   bool cage = false;
   bool no_features = false;
+  bool flat = false;
   bool no_memory_check = false;
   bool scheme_given = false;
   bool levels_given = false;
 };
 
-render::ViewDirection parse_view(const std::string& text) {
-  render::ViewDirection view;
-  char comma = 0;
-  int consumed = 0;
-  if (std::sscanf(text.c_str(), "%lf %c %lf%n", &view.azimuth, &comma, &view.elevation, &consumed) != 3 ||
-      comma != ',' || consumed != static_cast<int>(text.size()) || !std::isfinite(view.azimuth) ||
-      !(view.elevation >= -90.0 && view.elevation <= 90.0))
-    throw InvalidInputError("--view: expected AZIMUTH,ELEVATION in degrees (elevation in -90..90), not '" + text + "'");
-  return view;
-}
-
-std::pair<int, int> parse_size(const std::string& text) {
-  int width = 0, height = 0, consumed = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%n", &width, &height, &consumed) != 2 ||
-      consumed != static_cast<int>(text.size()) || width < 1 || height < 1 || width > render::kMaxImageSide ||
-      height > render::kMaxImageSide)
-    throw InvalidInputError(fmt::format("--size: expected WIDTHxHEIGHT in pixels, each 1..{}, not '{}'",
-                                        render::kMaxImageSide, text));
-  return {width, height};
-}
-
-render::Rgb parse_colour(const std::string& text) {
-  std::string lower = text;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (lower == "white") return {1.0F, 1.0F, 1.0F};
-  if (lower == "black") return {0.0F, 0.0F, 0.0F};
-  if (lower == "grey" || lower == "gray") return {0.5F, 0.5F, 0.5F};
-  unsigned r = 0, g = 0, b = 0;
-  int consumed = 0;
-  if (lower.size() == 7 && std::sscanf(lower.c_str(), "#%2x%2x%2x%n", &r, &g, &b, &consumed) == 3 && consumed == 7)
-    return {static_cast<float>(r) / 255.0F, static_cast<float>(g) / 255.0F, static_cast<float>(b) / 255.0F};
-  throw InvalidInputError("--background: expected #rrggbb, white, black or grey, not '" + text + "'");
-}
-
-// The scheme's limit normals of the refined mesh's vertices where it has
-// closed-form limit masks (evaluating them is cheap); empty otherwise, and
-// the picture is shaded by the faces' normals.
-std::vector<Vec3> limit_normals(const PolygonMesh& surface, const Scheme& scheme, const RefineOptions& refine) {
-  if (!scheme.limit_masks || limit_unavailable(scheme)) return {};
-  LimitOptions options;
-  options.refine = refine;
-  options.refine.levels = 0;
-  options.refine.on_level = nullptr;
-  options.max_resolve_levels = 0;  // the picture's own level: no further refinement
-  return limit_positions(surface, scheme, options).normals;
-}
-
 int run_render(RenderCommandOptions& opt) {
-  const render::ViewDirection view = parse_view(opt.view);
-  const auto [width, height] = parse_size(opt.size);
-  render::RenderStyle style;
-  style.width = width;
-  style.height = height;
-  style.view = view;
-  style.background = parse_colour(opt.background);
-  style.supersample = opt.samples;
+  const render::RenderStyle style = picture_style(opt.picture);
+  const int width = style.width, height = style.height;
+  const render::ViewDirection view = style.view;
   std::string extension = std::filesystem::path(opt.output).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (extension != ".png") throw InvalidInputError(opt.output + ": render writes PNG images (.png)");
@@ -119,20 +66,20 @@ int run_render(RenderCommandOptions& opt) {
 
   PolygonMesh surface;
   std::vector<Vec3> normals;
-  const char* shading = "face normals";
+  const char* shading = opt.flat ? "each face's own normal" : "face normals";
   if (levels > 0) {
     check_refinable(file.mesh, scheme, options, &file.lines);
     check_fits_in_memory(file.mesh, scheme, levels, opt.no_memory_check, "render");
     surface = refine(file.mesh, scheme, options, &file.lines);
     clock.lap("refine");
-    normals = limit_normals(surface, scheme, options);
+    if (!opt.flat) normals = limit_normals_for_picture(surface, scheme, options);
     if (!normals.empty()) shading = "limit normals";
     clock.lap("normals");
   } else {
     surface = file.mesh;
   }
   render::Scene scene =
-      render::surface_scene(surface, normals, render::EdgeStyle{.wireframe = opt.wireframe, .features = !opt.no_features});
+      render::surface_scene(surface, normals, render::EdgeStyle{.wireframe = opt.wireframe, .features = !opt.no_features, .flat = opt.flat});
   if (opt.cage) render::add_cage(scene, file.mesh);
   const render::Image image = render::rasterize(scene, style);
   clock.lap("draw");
@@ -168,17 +115,11 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("-l,--levels", opt->levels,
                   "Refinement steps before drawing (default: 3 with -s, else 0: the mesh as given)")
       ->check(CLI::Range(0, 12));
-  cmd->add_option("--view", opt->view, "Camera direction AZIMUTH,ELEVATION in degrees (y up; 0,0 looks from +z)")
-      ->capture_default_str();
-  cmd->add_option("--size", opt->size, "Image size WIDTHxHEIGHT in pixels")->capture_default_str();
-  cmd->add_option("--background", opt->background, "Background colour: #rrggbb, white, black or grey")
-      ->capture_default_str();
-  cmd->add_option("--samples", opt->samples, "Samples per pixel along each axis (smooths edges)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 4));
+  add_picture_options(*cmd, opt->picture, "800x600");
   cmd->add_flag("--wireframe", opt->wireframe, "Draw every edge of the drawn surface");
   cmd->add_flag("--cage", opt->cage, "Draw the control mesh's edges over the surface (green)");
   cmd->add_flag("--no-features", opt->no_features, "Do not draw boundaries and creases in colour");
+  cmd->add_flag("--flat", opt->flat, "Shade each face by its own normal (facets; default: smooth)");
   add_report_options(*cmd, opt->report, "Print the time of each phase");
   cmd->add_flag("--no-memory-check", opt->no_memory_check,
                 "Refine even when the estimated peak memory exceeds what the machine has available");

@@ -41,5 +41,6 @@ Command add_analyze_command(CLI::App& app);
 Command add_depth_command(CLI::App& app);
 Command add_adaptive_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
 
 }  // namespace subdiv::cli

@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
   const Command depth = add_depth_command(app);
   const Command adaptive = add_adaptive_command(app);
   const Command render = add_render_command(app);
+  const Command compare = add_compare_command(app);
 
   // A first word that names no command: say which one was meant.
   if (argc > 1 && argv[1][0] != '-') {
@@ -101,6 +102,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("depth")) return finish(depth());
     if (app.got_subcommand("adaptive")) return finish(adaptive());
     if (app.got_subcommand("render")) return finish(render());
+    if (app.got_subcommand("compare")) return finish(compare());
     print_error("no command given (run 'subdiv --help' for usage)");
     return kExitBadInput;
   } catch (const subdiv::Error& e) {
