@@ -8,7 +8,8 @@
 # the L-shaped patch with the standard and the piecewise-smooth boundary
 # rules, and refines Spot to an accuracy (a priori depth, adaptive
 # refinement), and runs one Python example. Pictures (PNG) of the refined
-# surfaces. Results under out/.
+# surfaces, and the survey's comparison figures as web pages and PNG grids.
+# Results under out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -36,9 +37,15 @@ for mesh in cube tetrahedron; do
     triangulate=()  # the schemes that read triangles get the triangulated mesh
     case "$scheme" in loop | butterfly | modified-butterfly | sqrt3 | interpolatory-sqrt3 | quasi-4-8) triangulate=(--triangulate) ;; esac
     "$subdiv" refine "data/meshes/$mesh.obj" -s "$scheme" "${triangulate[@]}" -l 4 -o "out/${mesh}_${scheme}4.obj"
-    "$subdiv" render "out/${mesh}_${scheme}4.obj" --size 400x400 -q -o "out/${mesh}_${scheme}4.png"
   done
 done
+echo "== the survey's comparison figures: every surface scheme on the cube and the tetrahedron, and a rook"
+echo "   under Loop, Catmull-Clark and Catmull-Clark on its triangulation (web pages and PNG grids)"
+for mesh in cube tetrahedron; do
+  "$subdiv" compare "data/meshes/$mesh.obj" -l 3 -q -o "out/survey_$mesh.html" --png "out/survey_$mesh.png" --size 300x300 --columns 6
+done
+"$subdiv" compare data/meshes/rook.obj -s catmull-clark,loop,catmull-clark/triangulated -l 3 --view 30,25 \
+  -o out/survey_rook.html --png out/survey_rook.png --size 360x400
 # Kobbelt's interpolatory scheme reads quads: the cube, and the L (open, with corners).
 "$subdiv" refine data/meshes/cube.obj -s kobbelt -l 4 -o out/cube_kobbelt4.obj
 "$subdiv" refine data/meshes/l_shape.obj -s kobbelt -l 4 -o out/l_shape_kobbelt4.obj

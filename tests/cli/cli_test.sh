@@ -831,6 +831,10 @@ run compare-all-tetra 0 compare "$meshes/tetrahedron.obj" -l 1 -o "$work/all.htm
   { grep -q "kobbelt left out" "$work/err" && pass || fail "compare -s all: no warning for kobbelt on triangles"; }
 run compare-kobbelt-tetra 1 compare "$meshes/tetrahedron.obj" -s kobbelt -o "$work/k.html" &&
   stderr_one_line compare-kobbelt-tetra
+run compare-triangulated 0 compare "$meshes/rook.obj" -s catmull-clark,catmull-clark/triangulated -l 1 --json -o "$work/r.html" &&
+  python3 -c 'import json,sys; p=json.load(sys.stdin)["panels"]; assert [x["scheme"] for x in p]==["catmull-clark","catmull-clark/triangulated"] and p[1]["faces"]>p[0]["faces"], p' <"$work/out" &&
+  pass || fail "compare /triangulated: unexpected panels"
+run compare-bad-suffix 1 compare "$meshes/cube.obj" -s loop/quads -o "$work/u.html" && stderr_has compare-bad-suffix "the only suffix is /triangulated"
 run compare-unknown 1 compare "$meshes/cube.obj" -s loop,lop -o "$work/u.html" && stderr_has compare-unknown "unknown scheme 'lop'"
 run compare-twice 1 compare "$meshes/cube.obj" -s loop,loop -o "$work/u.html" && stderr_has compare-twice "listed twice"
 run compare-not-html 1 compare "$meshes/cube.obj" -o "$work/u.htm" && stderr_one_line compare-not-html

@@ -28,6 +28,7 @@
 #include "subdiv/core/error.h"
 #include "subdiv/io/file_io.h"
 #include "subdiv/io/mesh_io.h"
+#include "subdiv/mesh/triangulate.h"
 #include "subdiv/refine/refine.h"
 
 namespace subdiv::cli {
@@ -55,6 +56,9 @@ struct Refined {
   bool triangulated = false;
 };
 
+// A listed scheme with this suffix refines the triangulated mesh.
+constexpr std::string_view kTriangulated = "/triangulated";
+
 std::vector<std::string> scheme_list(const CompareCommandOptions& opt) {
   std::vector<std::string> names;
   if (!opt.schemes_given || opt.refinement.scheme == "all") {
@@ -66,7 +70,10 @@ std::vector<std::string> scheme_list(const CompareCommandOptions& opt) {
     if (name.empty()) throw InvalidInputError("-s: an empty scheme name in '" + opt.refinement.scheme + "'");
     if (std::find(names.begin(), names.end(), name) != names.end())
       throw InvalidInputError("-s: " + name + " is listed twice");
-    scheme_named(name);  // unknown names: the known ones, and the closest
+    const std::size_t slash = name.find('/');
+    if (slash != std::string::npos && name.substr(slash) != kTriangulated)
+      throw InvalidInputError("-s: '" + name + "': the only suffix is " + std::string(kTriangulated));
+    scheme_named(name.substr(0, slash));  // unknown names: the known ones, and the closest
     names.push_back(name);
   }
   return names;
@@ -79,11 +86,18 @@ bool has_non_triangles(const PolygonMesh& mesh) {
 }
 
 Refined refine_for_panel(const CompareCommandOptions& opt, const std::string& name, const MeshFile& input) {
+  const std::size_t slash = name.find('/');
   RefinementOptionValues values = opt.refinement;
-  values.scheme = name;
+  values.scheme = name.substr(0, slash);
   const Scheme scheme = chosen_scheme(values);
-  values.triangulate = scheme.traits.needs_triangles && has_non_triangles(input.mesh);
   MeshFile file = input;
+  const bool asked = slash != std::string::npos;
+  if (asked) {
+    file.mesh = triangulate(file.mesh);
+    file.lines.face_lines.clear();
+    file.lines.hole_lines.clear();
+  }
+  values.triangulate = !asked && scheme.traits.needs_triangles && has_non_triangles(input.mesh);
   RefineOptions options;
   apply_refinement_options(values, scheme, file, options);
   options.levels = opt.levels;
@@ -94,7 +108,7 @@ Refined refine_for_panel(const CompareCommandOptions& opt, const std::string& na
   out.panel.mesh = refine(file.mesh, scheme, options, &file.lines);
   out.counts = fmt::format("level {}: {}, {}", opt.levels, count_of(out.panel.mesh.vertex_count(), "vertex", "vertices"),
                            count_of(out.panel.mesh.face_count(), "face", "faces"));
-  out.triangulated = values.triangulate;
+  out.triangulated = asked || values.triangulate;
   out.panel.caption = out.counts + (out.triangulated ? ", of the triangulated mesh" : "");
   if (!opt.png.empty()) out.normals = limit_normals_for_picture(out.panel.mesh, scheme, options);
   return out;
@@ -205,7 +219,8 @@ Command add_compare_command(CLI::App& app) {
   cmd->add_flag("--no-memory-check", opt->no_memory_check,
                 "Refine even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(
-      "Schemes that read triangles refine the triangulated mesh (the caption says so).\n"
+      "Schemes that read triangles refine the triangulated mesh (the caption says so);\n"
+      "a listed name with the suffix /triangulated (catmull-clark/triangulated) does too.\n"
       "With -s all, schemes that refuse the mesh are left out with a warning; a\n"
       "listed scheme that refuses it is an error. Scheme parameters (--tension,\n"
       "--degree, ...) apply to every listed scheme. --size, --view, --background\n"
