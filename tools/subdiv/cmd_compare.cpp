@@ -18,6 +18,7 @@
 #include "memory_guard.h"
 #include "output_checks.h"
 #include "picture_options.h"
+#include "plots.h"
 #include "refinement_options.h"
 #include "scheme_option.h"
 #include "surface_normals.h"
@@ -181,6 +182,9 @@ int run_compare(const CompareCommandOptions& opt) {
   write_file_atomically(opt.output, compare::comparison_page(title, input.mesh, panels));
   clock.lap("page");
   if (!opt.png.empty()) {
+    struct ReleaseCaches {
+      ~ReleaseCaches() { release_text_caches(); }  // the captions' fonts, on every path
+    } release_caches_on_exit;
     write_file_atomically(opt.png, grid_png(input, refined, opt));
     clock.lap("pictures");
   }

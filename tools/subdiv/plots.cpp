@@ -404,6 +404,10 @@ std::string render_characteristic_map_plot(const CharacteristicMapPlot& plot, Im
 
 void release_plot_caches() {
   if (!rendered) return;
+  release_text_caches();
+}
+
+void release_text_caches() {
   cairo_debug_reset_static_data();
   FcFini();
   rendered = false;

@@ -58,4 +58,9 @@ std::string render_characteristic_map_plot(const CharacteristicMapPlot& plot, Im
 /// was rendered.
 void release_plot_caches();
 
+/// The same for text drawn elsewhere (the captions of compare's picture
+/// grid): frees the caches unconditionally. Call once, when no Cairo object
+/// is alive.
+void release_text_caches();
+
 }  // namespace subdiv::cli
