@@ -22,12 +22,12 @@ install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE ${PR
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
 install(EXPORT subdivTargets NAMESPACE subdiv:: DESTINATION ${SUBDIV_CMAKE_DIR})
-# A static library passes TBB and {fmt} on to the final link, so the package
+# A static library passes TBB, {fmt} and TinyGLTF on to the final link, so the package
 # looks for them too; a shared one needs only what the headers include.
 if(BUILD_SHARED_LIBS)
   set(SUBDIV_PRIVATE_DEPENDENCIES "")
 else()
-  set(SUBDIV_PRIVATE_DEPENDENCIES "find_dependency(TBB)\nfind_dependency(fmt)")
+  set(SUBDIV_PRIVATE_DEPENDENCIES "find_dependency(TBB)\nfind_dependency(fmt)\nfind_dependency(TinyGLTF CONFIG)")
 endif()
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/subdivConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/subdivConfig.cmake INSTALL_DESTINATION ${SUBDIV_CMAKE_DIR})
@@ -36,12 +36,12 @@ install(FILES ${PROJECT_BINARY_DIR}/subdivConfig.cmake ${PROJECT_BINARY_DIR}/sub
         DESTINATION ${SUBDIV_CMAKE_DIR})
 
 # pkg-config: Eigen's flags come from its own eigen3.pc; a static library
-# also names TBB and {fmt} for the final link.
+# also names TBB, {fmt} and TinyGLTF for the final link.
 if(BUILD_SHARED_LIBS)
   set(SUBDIV_PC_REQUIRES_PRIVATE "")
   set(SUBDIV_PC_LIBS_PRIVATE "")
 else()
-  set(SUBDIV_PC_REQUIRES_PRIVATE "tbb fmt")
+  set(SUBDIV_PC_REQUIRES_PRIVATE "tbb fmt tinygltf")
   set(SUBDIV_PC_LIBS_PRIVATE "-lstdc++")
 endif()
 # The prefix, relative to the .pc file, so that an installed tree can move.

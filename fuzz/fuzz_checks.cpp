@@ -3,13 +3,17 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <limits>
 #include <string>
 #include <string_view>
 
 #include "subdiv/core/error.h"
+#include "subdiv/io/gltf.h"
 #include "subdiv/io/obj.h"
 #include "subdiv/io/off.h"
 #include "subdiv/io/ply.h"
+#include "subdiv/io/stl.h"
 #include "subdiv/mesh/validation.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/scheme.h"
@@ -31,6 +35,12 @@ constexpr Index kMaxFacesForTwoLevels = 16;
 
 std::string_view as_text(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
+}
+
+// Through a volatile: GCC 12 at -O2 can drop a float round trip's rounding.
+float to_float(double x) {
+  volatile float f = static_cast<float>(x);
+  return f;
 }
 
 bool same_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
@@ -73,6 +83,36 @@ bool try_parse(Parse parse, MeshFile& file) {
   }
 }
 
+/// Binary STL holds float32: the mesh written in binary and read back must
+/// equal the mesh with its positions rounded to float written in ASCII and
+/// read back (rounding may weld vertices and collapse triangles, the same
+/// way in both).
+void check_stl_binary_round_trip(const PolygonMesh& mesh) {
+  std::string binary;
+  try {
+    binary = format_stl(mesh, StlEncoding::binary);
+  } catch (const InvalidInputError&) {
+    return;  // positions beyond float's range
+  }
+  PolygonMesh rounded = mesh;
+  for (Vec3& p : rounded.positions)
+    for (int c = 0; c < 3; ++c) {
+      if (!(std::abs(p[c]) <= static_cast<double>(std::numeric_limits<float>::max()))) return;  // an unused vertex
+      p[c] = static_cast<double>(static_cast<float>(p[c]));
+    }
+  MeshFile expected, actual;
+  try {
+    actual = parse_stl(binary, "round-trip.stl");
+    expected = parse_stl(format_stl(rounded, StlEncoding::ascii), "rounded.stl");
+  } catch (const Error& e) {
+    fail(std::string("STL binary: the writer's output does not parse: ") + e.what());
+  }
+  const PolygonMesh& a = expected.mesh;
+  const PolygonMesh& b = actual.mesh;
+  if (a.positions != b.positions || a.face_offsets != b.face_offsets || a.face_indices != b.face_indices)
+    fail("STL binary: a write and a read differ from rounding the positions to float");
+}
+
 }  // namespace
 
 void check_obj_input(const std::uint8_t* data, std::size_t size) {
@@ -106,6 +146,48 @@ void check_off_input(const std::uint8_t* data, std::size_t size) {
   check_round_trip(
       file, [](const PolygonMesh& m) { return format_off(m, nullptr, 1); },
       [](std::string_view t) { return parse_off(t, "round-trip.off"); }, "OFF");
+}
+
+void check_gltf_input(const std::uint8_t* data, std::size_t size) {
+  const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
+  MeshFile file;
+  if (!try_parse([&] { return parse_gltf(as_text(data, size), "fuzz.gltf", binary); }, file)) return;
+  (void)validate(file.mesh, &file.lines);
+  std::string text;
+  try {
+    text = format_gltf(file.mesh, false);
+  } catch (const InvalidInputError&) {
+    return;  // no triangle, or a position beyond float32: the writer's documented refusals
+  }
+  MeshFile second;
+  try {
+    second = parse_gltf(text, "round-trip.gltf", false);
+  } catch (const Error& e) {
+    fail(std::string("glTF: the writer's output does not parse: ") + e.what());
+  }
+  const PolygonMesh& a = file.mesh;
+  const PolygonMesh& b = second.mesh;
+  if (a.vertex_count() != b.vertex_count() || a.face_offsets != b.face_offsets || a.face_indices != b.face_indices)
+    fail("glTF: faces or the vertex count changed by a write and a read");
+  for (Index v = 0; v < a.vertex_count(); ++v)
+    for (int c = 0; c < 3; ++c)
+      if (static_cast<double>(to_float(a.positions[v][c])) != b.positions[v][c])
+        fail("glTF: a position changed beyond float rounding by a write and a read, vertex " + std::to_string(v));
+}
+
+void check_stl_input(const std::uint8_t* data, std::size_t size) {
+  MeshFile file;
+  if (!try_parse([&] { return parse_stl(as_text(data, size), "fuzz.stl"); }, file)) return;
+  (void)validate(file.mesh, &file.lines);
+  const auto read_back = [](std::string_view t) { return parse_stl(t, "round-trip.stl"); };
+  check_round_trip(
+      file, [](const PolygonMesh& m) { return format_stl(m, StlEncoding::ascii); }, read_back, "STL ascii");
+  check_stl_binary_round_trip(file.mesh);
+  // Welding with a tolerance takes another path (a grid of cells).
+  MeshFile welded;
+  if (!try_parse([&] { return parse_stl(as_text(data, size), "fuzz.stl", {.weld_tolerance = 0.5}); }, welded))
+    fail("STL: a file read without a weld tolerance is refused with one");
+  (void)validate(welded.mesh, &welded.lines);
 }
 
 void check_pipeline_input(const std::uint8_t* data, std::size_t size) {

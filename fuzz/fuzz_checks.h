@@ -18,6 +18,14 @@ void check_obj_input(const std::uint8_t* data, std::size_t size);
 void check_ply_input(const std::uint8_t* data, std::size_t size);
 /// OFF: the same.
 void check_off_input(const std::uint8_t* data, std::size_t size);
+/// glTF 2.0: read as a GLB container when it starts with the "glTF" magic,
+/// else as JSON; a parsed mesh validates without throwing and survives a
+/// glTF write and read (positions to float precision).
+void check_gltf_input(const std::uint8_t* data, std::size_t size);
+/// STL, ASCII or binary: parses or throws ParseError; a parsed mesh
+/// validates without throwing and survives an ASCII and a binary write and
+/// read (binary: positions to float precision).
+void check_stl_input(const std::uint8_t* data, std::size_t size);
 /// The first byte picks the format (byte % 3: OBJ, PLY, OFF) and, for
 /// meshes of at most 16 faces, two levels instead of one ((byte / 3) odd);
 /// the rest is the file. A valid mesh of at most 64 faces and 256 vertices

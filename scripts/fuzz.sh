@@ -6,7 +6,7 @@
 #   --seconds N   per target, one after the other (default 60: CI's short run)
 #   --runs N      instead: N executions per target (the long campaign)
 #   --max-len B   the largest input tried, in bytes (default 16384)
-#   --targets T   which targets (default all four); a long campaign on two
+#   --targets T   which targets (default all six); a long campaign on two
 #                 cores runs two of these scripts side by side
 #
 # Seeds are fuzz/seeds (PLY and OFF in every encoding the readers take), the
@@ -22,7 +22,7 @@ cd "$(dirname "$0")/.."
 seconds=60
 runs=-1
 max_len=16384
-targets="obj ply off pipeline"
+targets="obj ply off gltf stl pipeline"
 while [ $# -gt 0 ]; do
   case "$1" in
     --seconds) seconds="$2"; shift 2 ;;
@@ -58,9 +58,10 @@ seed_files() {  # extension
 }
 seeds="$(mktemp -d)"  # one per run, so that two runs side by side do not share it
 trap 'rm -rf "$seeds"' EXIT
-for format in obj ply off; do
-  mkdir -p "$seeds/$format"
-  seed_files "$format" | while read -r f; do cp "$f" "$seeds/$format/$(echo "${f#../}" | tr '/' '_')"; done
+for format in obj ply off gltf glb stl; do
+  target="$format"; [ "$format" = glb ] && target=gltf  # one target reads both glTF forms
+  mkdir -p "$seeds/$target"
+  seed_files "$format" | while read -r f; do cp "$f" "$seeds/$target/$(echo "${f#../}" | tr '/' '_')"; done
 done
 # The pipeline's first byte picks the format (byte % 3) and one or two levels ((byte / 3) odd).
 mkdir -p "$seeds/pipeline"
@@ -87,8 +88,8 @@ for target in $targets; do
   mkdir -p "$corpus" "$findings/$target"
   dict=()
   case "$target" in
-    obj|ply|off) dict=(-dict="fuzz/dict/$target.dict") ;;
-    pipeline) cat fuzz/dict/*.dict > "$seeds/pipeline.dict"; dict=(-dict="$seeds/pipeline.dict") ;;
+    obj|ply|off|gltf|stl) dict=(-dict="fuzz/dict/$target.dict") ;;
+    pipeline) cat fuzz/dict/{obj,ply,off}.dict > "$seeds/pipeline.dict"; dict=(-dict="$seeds/pipeline.dict") ;;
   esac
   budget="${seconds} s"; [ "$runs" -ge 0 ] && budget="$runs runs"
   echo "fuzz.sh: $target for $budget ($(ls "$seeds/$target" | wc -l) seeds)"

@@ -14,6 +14,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcairo2-dev libfontconfig-dev  # subdiv analyze: --json output, plots
   libosmesa6-dev  # subdiv render: Mesa's off-screen renderer
+  libtinygltf-dev  # glTF 2.0 reading and writing
   libassimp-dev libosd-dev  # peers in bench/ (Assimp import, OpenSubdiv topology)
   python3  # the CLI test reads the --json documents
   python3-dev pybind11-dev python3-numpy python3-scipy python3-pytest  # the Python module and its tests

@@ -216,11 +216,13 @@ void bind_mesh(py::module_& m) {
       .def_property_readonly("face_varying_channels", &face_varying_channels_of)
       .def_property_readonly("polylines", &polylines_of);
 
-  m.def("read", [](const std::string& path) {
+  m.def("read", [](const std::string& path, double weld_tolerance) {
     MeshFile file;
     {
       py::gil_scoped_release release;
-      file = read_mesh(path);
+      ReadOptions options;
+      options.weld_tolerance = weld_tolerance;
+      file = read_mesh(path, options);
     }
     return py::make_tuple(std::make_shared<PolygonMesh>(std::move(file.mesh)), file.warnings);
   });
@@ -228,6 +230,7 @@ void bind_mesh(py::module_& m) {
                     bool write_channels, bool hole_faces_as_faces, int threads) {
     WriteOptions options;
     options.ply_encoding = ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+    options.stl_encoding = ascii ? StlEncoding::ascii : StlEncoding::binary;
     options.write_tags = write_tags;
     options.write_channels = write_channels;
     options.hole_faces_as_faces = hole_faces_as_faces;

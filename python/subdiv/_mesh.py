@@ -255,28 +255,32 @@ def _from_state(state):
     return Mesh._wrap(_subdiv.Mesh._from_obj_state(state))
 
 
-def read(path):
-    """Reads a mesh from an OBJ (with crease, corner and hole tags), PLY or OFF
-    file, chosen by the extension. Raises IoError when the file cannot be
-    read, ParseError (with .path and .line) when it is malformed.
-    read_with_warnings() also returns the reader's notes."""
-    mesh, _ = read_with_warnings(path)
+def read(path, weld_tolerance=0.0):
+    """Reads a mesh from an OBJ (with crease, corner and hole tags), PLY, OFF,
+    glTF (.gltf, .glb) or STL file, chosen by the extension. Raises IoError
+    when the file cannot be read, ParseError (with .path and .line) when it is
+    malformed. weld_tolerance: STL, and glTF not written by subdiv: corners
+    within it in every coordinate become one vertex (0: equal positions only;
+    negative: none). read_with_warnings() also returns the reader's notes."""
+    mesh, _ = read_with_warnings(path, weld_tolerance)
     return mesh
 
 
-def read_with_warnings(path):
+def read_with_warnings(path, weld_tolerance=0.0):
     """(mesh, warnings): read() and the reader's notes, one line each."""
-    core, warnings = _subdiv.read(os.fspath(path))
+    core, warnings = _subdiv.read(os.fspath(path), float(weld_tolerance))
     return Mesh._wrap(core), list(warnings)
 
 
 def write(mesh, path, ascii=False, tags=True, channels=True, hole_faces_as_faces=False, threads=0):
-    """Writes mesh to path (OBJ, PLY or OFF by the extension) atomically: a
-    temporary file renamed into place, so a failure leaves no partial file.
+    """Writes mesh to path (OBJ, PLY, OFF, glTF or STL by the extension)
+    atomically: a temporary file renamed into place, so a failure leaves no
+    partial file.
 
-    ascii: PLY as text (default binary little-endian). tags: OBJ tag lines.
-    channels: the uv, normal and colour channels (OBJ, PLY). hole_faces_as_faces: PLY and OFF
-    write hole faces as ordinary faces (default: left out, with a note).
+    ascii: PLY and STL as text (default binary little-endian). tags: OBJ tag
+    lines, glTF extras. channels: the uv, normal and colour channels (OBJ, PLY,
+    glTF). hole_faces_as_faces: PLY, OFF and STL write hole faces as ordinary
+    faces (default: left out, with a note).
     threads: formatting workers (0: all cores; the bytes are the same).
     Returns the notes about data the format cannot hold."""
     if not isinstance(mesh, Mesh):

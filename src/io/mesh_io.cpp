@@ -5,9 +5,11 @@
 
 #include "subdiv/io/file_io.h"
 #include "subdiv/core/error.h"
+#include "subdiv/io/gltf.h"
 #include "subdiv/io/obj.h"
 #include "subdiv/io/off.h"
 #include "subdiv/io/ply.h"
+#include "subdiv/io/stl.h"
 
 namespace subdiv {
 
@@ -17,8 +19,11 @@ FileFormat format_from_path(const std::filesystem::path& path) {
   if (ext == ".obj") return FileFormat::obj;
   if (ext == ".ply") return FileFormat::ply;
   if (ext == ".off") return FileFormat::off;
+  if (ext == ".gltf") return FileFormat::gltf;
+  if (ext == ".glb") return FileFormat::glb;
+  if (ext == ".stl") return FileFormat::stl;
   throw InvalidInputError(path.string() + ": unknown mesh format '" + ext +
-                          "' (expected .obj, .ply or .off)");
+                          "' (expected .obj, .ply, .off, .gltf, .glb or .stl)");
 }
 
 const char* to_string(FileFormat f) noexcept {
@@ -26,17 +31,23 @@ const char* to_string(FileFormat f) noexcept {
     case FileFormat::obj: return "OBJ";
     case FileFormat::ply: return "PLY";
     case FileFormat::off: return "OFF";
+    case FileFormat::gltf: return "glTF";
+    case FileFormat::glb: return "GLB";
+    case FileFormat::stl: return "STL";
   }
   return "?";
 }
 
-MeshFile read_mesh(const std::filesystem::path& path) {
+MeshFile read_mesh(const std::filesystem::path& path, const ReadOptions& options) {
   const FileFormat format = format_from_path(path);
   const std::string bytes = read_file(path);
   switch (format) {
     case FileFormat::obj: return parse_obj(bytes, path.string());
     case FileFormat::ply: return parse_ply(bytes, path.string());
     case FileFormat::off: return parse_off(bytes, path.string());
+    case FileFormat::gltf: return parse_gltf(bytes, path.string(), false, options);
+    case FileFormat::glb: return parse_gltf(bytes, path.string(), true, options);
+    case FileFormat::stl: return parse_stl(bytes, path.string(), options);
   }
   throw InvalidInputError(path.string() + ": unknown mesh format");
 }
@@ -74,7 +85,8 @@ std::vector<std::string> write_mesh(const PolygonMesh& mesh, const std::filesyst
   const FileFormat format = format_from_path(path);
   check_indices(mesh);
   std::vector<std::string> warnings;
-  if (format != FileFormat::obj && !mesh.tags.holes.empty() && !options.hole_faces_as_faces) {
+  const bool keeps_tags = format == FileFormat::obj || format == FileFormat::gltf || format == FileFormat::glb;
+  if (!keeps_tags && !mesh.tags.holes.empty() && !options.hole_faces_as_faces) {
     const PolygonMesh kept = without_hole_faces(mesh);
     const Index left_out = mesh.face_count() - kept.face_count();
     warnings.push_back(std::string(to_string(format)) + " has no place for hole tags: " + std::to_string(left_out) +
@@ -97,8 +109,23 @@ std::vector<std::string> write_mesh(const PolygonMesh& mesh, const std::filesyst
       }
       break;
     case FileFormat::off: data = format_off(mesh, &warnings, options.threads); break;
+    case FileFormat::gltf:
+    case FileFormat::glb:
+      if (!options.write_tags || !options.write_channels) {
+        PolygonMesh bare = mesh;  // what was asked to be left out, left out
+        if (!options.write_tags) bare.tags = {};
+        if (!options.write_channels) {
+          bare.vertex_channels.clear();
+          bare.face_varying_channels.clear();
+        }
+        data = format_gltf(bare, format == FileFormat::glb, &warnings);
+      } else {
+        data = format_gltf(mesh, format == FileFormat::glb, &warnings);
+      }
+      break;
+    case FileFormat::stl: data = format_stl(mesh, options.stl_encoding, &warnings); break;
   }
-  if (format != FileFormat::obj && !mesh.tags.empty() && options.write_tags)
+  if (!keeps_tags && !mesh.tags.empty() && options.write_tags)
     warnings.push_back(std::string(to_string(format)) + " has no place for tags (creases, corners, holes): not written");
   if (format != FileFormat::obj && !mesh.polylines.empty())
     warnings.push_back(std::string(to_string(format)) + " has no place for polylines (OBJ 'l' lines): " +

@@ -10,6 +10,7 @@
 
 #include "subdiv/core/error.h"
 #include "subdiv/io/obj.h"
+#include "obj_tags.h"
 #include "text_format.h"
 
 namespace subdiv {
@@ -41,7 +42,9 @@ void append_tag_header(std::string& out, std::string_view name, std::size_t ints
   append_number(out, static_cast<long long>(strings));
 }
 
-void append_tags(std::string& out, const Tags& tags) {
+}  // namespace
+
+void detail::append_obj_tag_lines(std::string& out, const Tags& tags) {
   for (const auto& c : tags.creases) {
     append_tag_header(out, "crease", 2, 1, 0);
     for (const double x : {static_cast<double>(c.v0), static_cast<double>(c.v1)}) {
@@ -122,8 +125,6 @@ void append_tags(std::string& out, const Tags& tags) {
     out += '\n';
   }
 }
-
-}  // namespace
 
 std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options, std::vector<std::string>* warnings) {
   check_indices(mesh);  // channel indices are dereferenced below
@@ -216,7 +217,7 @@ std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options, std
     }
     out += '\n';
   }
-  if (options.write_tags) append_tags(out, mesh.tags);
+  if (options.write_tags) detail::append_obj_tag_lines(out, mesh.tags);
   return out;
 }
 

@@ -44,7 +44,7 @@ stderr_one_line() {
 
 run help 0 --help && stdout_has help "subdiv info data/meshes/cube.obj"
 run info-help 0 info --help && stdout_has info-help "Example:"
-run convert-help 0 convert --help && stdout_has convert-help "Example:"
+run convert-help 0 convert --help && stdout_has convert-help "Examples:"
 run version 0 --version && stdout_has version "subdiv $(sed -n 's/^project(subdiv VERSION \([0-9.]*\).*/\1/p' "$project_dir/CMakeLists.txt")"
 
 run info-cube 0 info "$meshes/cube.obj"
@@ -81,11 +81,39 @@ run info-back 0 info "$work/back.obj" && stdout_has info-back "faces           1
 run convert-ascii 0 convert "$work/in.obj" "$work/ascii.ply" --ascii
 head -c 200 "$work/ascii.ply" | grep -q "format ascii 1.0" && pass || fail "convert --ascii: not ASCII PLY"
 run convert-self 1 convert "$work/in.obj" "$work/in.obj" && stderr_has convert-self "output is the input file"
-run convert-badext 1 convert "$work/in.obj" "$work/out.stl"
-[ ! -e "$work/out.stl" ] && pass || fail "convert-badext left a file"
+run convert-badext 1 convert "$work/in.obj" "$work/out.fbx"
+[ ! -e "$work/out.fbx" ] && pass || fail "convert-badext left a file"
 run convert-invalid 1 convert "$data/nonmanifold_edge.obj" "$work/nm.obj" --validate
 [ ! -e "$work/nm.obj" ] && pass || fail "convert --validate wrote an invalid mesh"
 run convert-nodir 1 convert "$work/in.obj" "$work/no/such/dir/x.obj" && stderr_one_line convert-nodir
+# Every pair of formats: the rook (quads and 12-gons) goes through each one and
+# into each other. STL holds triangles, so what passed through it has 284 triangles;
+# every other route keeps the 134 polygons (glTF through subdiv's extras).
+for from in obj ply off gltf glb stl; do
+  run "convert-to-$from" 0 convert "$meshes/rook.obj" "$work/pair.$from" || continue
+  for to in obj ply off gltf glb stl; do
+    [ "$from" = "$to" ] && continue
+    run "convert-$from-$to" 0 convert "$work/pair.$from" "$work/pair_$from.$to" || continue
+    faces=134; { [ "$from" = stl ] || [ "$to" = stl ]; } && faces=284
+    run "info-$from-$to" 0 info --json "$work/pair_$from.$to" || continue
+    python3 -c 'import json,sys; d=json.load(sys.stdin); sys.exit(0 if (d["vertices"], d["faces"]) == (144, int(sys.argv[1])) else 1)' \
+      "$faces" <"$work/out" && pass || fail "convert $from -> $to: not 144 vertices and $faces faces"
+  done
+done
+run convert-stl-ascii 0 convert "$meshes/cube.obj" "$work/cube_ascii.stl" --ascii
+head -c 12 "$work/cube_ascii.stl" | grep -q "^solid" && pass || fail "convert --ascii: not ASCII STL"
+run convert-glb-ascii 1 convert "$meshes/cube.obj" "$work/cube.glb" --ascii && stderr_has convert-glb-ascii ".gltf is its text form"
+run convert-gltf-tags 0 convert "$data/tagged_octagon.obj" "$work/octagon.glb" && stderr_has convert-gltf-tags "kept in the extras"
+run convert-gltf-tags-back 0 convert "$work/octagon.glb" "$work/octagon_back.obj"
+[ "$(grep -c '^t ' "$work/octagon_back.obj")" = "$(grep -c '^t ' "$data/tagged_octagon.obj")" ] && pass || fail "glTF: tags not kept"
+# STL welding: without it every triangle keeps its three corners.
+run convert-stl-apart 0 convert "$work/pair.stl" "$work/apart.obj" --weld-tolerance -1 && stdout_has convert-stl-apart "852 vertices, 284 faces"
+run convert-stl-welded 0 convert "$work/pair.stl" "$work/welded.obj" --weld-tolerance 1e-6 && stdout_has convert-stl-welded "144 vertices, 284 faces"
+run refine-from-glb 0 refine "$work/pair.glb" -s catmull-clark -l 1 -o "$work/rook_cc.glb" && stdout_has refine-from-glb "552 faces"
+printf 'solid x\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 0 nan\n' >"$work/bad.stl"
+run stl-bad 1 info "$work/bad.stl" && stderr_one_line stl-bad && stderr_has stl-bad "bad.stl:5"
+printf '{"asset": {"version": "2.0"}, "buffers": [{"uri": "/dev/zero", "byteLength": 16}]}' >"$work/bad.gltf"
+run gltf-bad 1 info "$work/bad.gltf" && stderr_one_line gltf-bad && stderr_has gltf-bad "bad.gltf: "
 [ "$(sha256sum "$work/in.obj")" = "$before" ] && pass || fail "the input file changed"
 leftovers=$(find "$work" -name '*.tmp-*' | wc -l)
 [ "$leftovers" -eq 0 ] && pass || fail "temporary files left behind"
@@ -732,11 +760,11 @@ cmp -s "$work/out" "$work/depth_eac.json" && fail "depth --boundary edge-only: t
 
 # Options that do not apply are refused in one line, never ignored.
 run ascii-obj 1 refine "$meshes/cube.obj" -o "$work/x.obj" --ascii && stderr_one_line ascii-obj &&
-  stderr_has ascii-obj "--ascii applies to PLY output"
+  stderr_has ascii-obj "--ascii applies to PLY and STL output"
 run big-endian-obj 1 convert "$meshes/cube.obj" "$work/x.obj" --big-endian && stderr_has big-endian-obj "applies to PLY"
-run no-tags-ply 1 convert "$meshes/cube.obj" "$work/x.ply" --no-tags && stderr_has no-tags-ply "applies to OBJ output"
+run no-tags-ply 1 convert "$meshes/cube.obj" "$work/x.ply" --no-tags && stderr_has no-tags-ply "applies to OBJ and glTF output"
 run hole-faces-obj 1 convert "$meshes/cube.obj" "$work/x.obj" --keep-hole-faces &&
-  stderr_has hole-faces-obj "applies to PLY and OFF output"
+  stderr_has hole-faces-obj "applies to PLY, OFF and STL output"
 run isolation-closed-form 1 limit "$meshes/cube.obj" -o "$work/x.obj" --isolation-levels 3 &&
   stderr_has isolation-closed-form "--isolation-levels applies to the generic masks" &&
   run isolation-generic 0 limit "$meshes/cube.obj" -o "$work/x.obj" --isolation-levels 3 --masks generic

@@ -54,7 +54,7 @@ const fs::path kFuzzSeeds = fs::path(SUBDIV_SOURCE_DIR) / "fuzz" / "seeds";
 TEST(FuzzRegression, SeedsAreMeshesTheReadersTake) {
   // A seed the reader refuses would start the fuzzer from nothing.
   int seeds = 0;
-  for (const char* format : {"ply", "off"})
+  for (const char* format : {"ply", "off", "stl", "gltf"})
     for (const fs::path& seed : files_in(kFuzzSeeds / format)) {
       SCOPED_TRACE(seed.string());
       EXPECT_NO_THROW({
@@ -63,22 +63,28 @@ TEST(FuzzRegression, SeedsAreMeshesTheReadersTake) {
       });
       ++seeds;
     }
-  EXPECT_GE(seeds, 6);
+  EXPECT_GE(seeds, 13);
 }
 
 TEST(FuzzRegression, KeptFindingsPassTheirTargetsChecks) {
   run_on(files_in(kTestData / "fuzz" / "obj"), subdiv::fuzz::check_obj_input);
   run_on(files_in(kTestData / "fuzz" / "ply"), subdiv::fuzz::check_ply_input);
   run_on(files_in(kTestData / "fuzz" / "off"), subdiv::fuzz::check_off_input);
+  run_on(files_in(kTestData / "fuzz" / "stl"), subdiv::fuzz::check_stl_input);
+  run_on(files_in(kTestData / "fuzz" / "gltf"), subdiv::fuzz::check_gltf_input);
   run_on(files_in(kTestData / "fuzz" / "pipeline"), subdiv::fuzz::check_pipeline_input);
 }
 
 TEST(FuzzRegression, HandWrittenAndBundledMeshesPassTheReaderChecks) {
   int checked = 0;
-  for (const fs::path& dir : {kTestData, kBundled, kFuzzSeeds / "ply", kFuzzSeeds / "off"}) {
+  for (const fs::path& dir :
+       {kTestData, kBundled, kFuzzSeeds / "ply", kFuzzSeeds / "off", kFuzzSeeds / "stl", kFuzzSeeds / "gltf"}) {
     checked += run_on(files_in(dir, ".obj"), subdiv::fuzz::check_obj_input);
     checked += run_on(files_in(dir, ".ply"), subdiv::fuzz::check_ply_input);
     checked += run_on(files_in(dir, ".off"), subdiv::fuzz::check_off_input);
+    checked += run_on(files_in(dir, ".stl"), subdiv::fuzz::check_stl_input);
+    checked += run_on(files_in(dir, ".gltf"), subdiv::fuzz::check_gltf_input);
+    checked += run_on(files_in(dir, ".glb"), subdiv::fuzz::check_gltf_input);
   }
   EXPECT_GE(checked, 20);
 }

@@ -51,5 +51,19 @@ TEST(MalformedFiles, LyingPlyHeaderFailsFastWithoutAllocating) {
   EXPECT_LT(seconds, 1.0);
 }
 
+TEST(MalformedFiles, LyingStlCountFailsFastWithoutAllocating) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string e = error_reading("lying_count.stl");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_TRUE(contains(e, "lying_count.stl:1: not an STL file")) << e;
+  EXPECT_TRUE(contains(e, "4000000000")) << e;
+  EXPECT_LT(seconds, 1.0);
+}
+
+TEST(MalformedFiles, StlFacetWithFourVertices) {
+  const std::string e = error_reading("facet_four_vertices.stl");
+  EXPECT_TRUE(contains(e, "facet_four_vertices.stl:7: facet at line 2 has more than three vertices")) << e;
+}
+
 }  // namespace
 }  // namespace subdiv

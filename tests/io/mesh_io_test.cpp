@@ -39,7 +39,10 @@ TEST_F(MeshIoTest, FormatFollowsExtension) {
   EXPECT_EQ(format_from_path("a/b.obj"), FileFormat::obj);
   EXPECT_EQ(format_from_path("B.PLY"), FileFormat::ply);
   EXPECT_EQ(format_from_path("c.Off"), FileFormat::off);
-  EXPECT_THROW(format_from_path("d.stl"), InvalidInputError);
+  EXPECT_EQ(format_from_path("d.stl"), FileFormat::stl);
+  EXPECT_EQ(format_from_path("e.GLTF"), FileFormat::gltf);
+  EXPECT_EQ(format_from_path("f.glb"), FileFormat::glb);
+  EXPECT_THROW(format_from_path("g.fbx"), InvalidInputError);
   EXPECT_THROW(format_from_path("noext"), InvalidInputError);
 }
 
@@ -147,7 +150,7 @@ TEST_F(MeshIoTest, FailedWriteLeavesTheOldFileIntact) {
   EXPECT_THROW(write_mesh(broken, target), InvalidInputError);
   EXPECT_EQ(slurp(target), "original contents\n");
   EXPECT_THROW(write_mesh(test::cube(), dir_ / "no_such_dir" / "x.obj"), IoError);
-  EXPECT_THROW(write_mesh(test::cube(), dir_ / "x.stl"), InvalidInputError);
+  EXPECT_THROW(write_mesh(test::cube(), dir_ / "x.fbx"), InvalidInputError);
   EXPECT_EQ(files_in_dir(), 1u);
 }
 

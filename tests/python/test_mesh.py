@@ -144,6 +144,20 @@ def test_read_write_round_trip(tmp_path):
     np.testing.assert_array_equal(subdiv.read(tmp_path / "copy.obj").creases[0], mesh.creases[0])
 
 
+def test_gltf_and_stl(tmp_path):
+    mesh = subdiv.read(TEST_DATA / "tagged_octagon.obj")
+    for name in ("copy.gltf", "copy.glb"):
+        subdiv.write(mesh, tmp_path / name)
+        again = subdiv.read(tmp_path / name)
+        np.testing.assert_array_equal(again.points, mesh.points.astype(np.float32))
+        np.testing.assert_array_equal(again.faces, mesh.faces)
+        np.testing.assert_array_equal(again.creases[0], mesh.creases[0])
+    assert any("no place for tags" in note for note in subdiv.write(mesh, tmp_path / "copy.stl", ascii=True))
+    assert subdiv.read(tmp_path / "copy.stl").vertex_count == mesh.vertex_count
+    assert subdiv.read(tmp_path / "copy.stl", weld_tolerance=-1).vertex_count == 3 * subdiv.read(
+        tmp_path / "copy.stl").face_count
+
+
 def test_file_errors():
     with pytest.raises(subdiv.IoError) as missing:
         subdiv.read(TEST_DATA / "no_such_file.obj")

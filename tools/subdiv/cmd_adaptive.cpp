@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "read_options.h"
 #include "input_mesh.h"
 #include "output_checks.h"
 #include "wording.h"
@@ -50,6 +51,7 @@ void warn_not_carried(const std::string& path, const PolygonMesh& input, const P
 }
 
 struct AdaptiveCommandOptions {
+  ReadOptions read;  ///< --weld-tolerance
   std::string input;
   std::string output;
   double eps = 0.0;
@@ -82,7 +84,7 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
   check_output_path(opt.input, opt.output);
   check_ascii_applies(opt.ascii, opt.output);
   PhaseClock clock;
-  MeshFile file = read_mesh(opt.input);
+  MeshFile file = read_mesh(opt.input, opt.read);
   print_warnings(opt.input, file.warnings);
   AdaptiveOptions options;
   options.max_level = opt.max_level;
@@ -110,6 +112,7 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  wopt.stl_encoding = opt.ascii ? StlEncoding::ascii : StlEncoding::binary;
   wopt.threads = opt.refinement.threads;
   print_warnings(opt.output, write_mesh(result.mesh, opt.output, wopt));
   clock.lap("write");
@@ -149,7 +152,8 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
 Command add_adaptive_command(CLI::App& app) {
   auto opt = std::make_shared<AdaptiveCommandOptions>();
   CLI::App* cmd = app.add_subcommand("adaptive", "Refine only where the mesh is further than an accuracy from the limit");
-  cmd->add_option("input", opt->input, "Mesh (.obj, .ply or .off)")->required();
+  add_read_options(cmd, opt->read);
+  cmd->add_option("input", opt->input, "Mesh (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
   add_refinement_options(*cmd, opt->refinement, "Scheme (see 'subdiv schemes'; 'subdiv schemes --matrix' says which refine adaptively)");
   cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of an output vertex to its limit position")
@@ -159,7 +163,7 @@ Command add_adaptive_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(0, 12));
   add_report_options(*cmd, opt->report, "Print the time of each phase");
-  cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
+  cmd->add_flag("--ascii", opt->ascii, "ASCII PLY or STL output instead of binary");
   cmd->add_flag("--no-memory-check", opt->no_memory_check,
                 "Refine even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(

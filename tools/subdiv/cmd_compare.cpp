@@ -15,6 +15,7 @@
 
 #include "command_report.h"
 #include "commands.h"
+#include "read_options.h"
 #include "memory_guard.h"
 #include "output_checks.h"
 #include "picture_options.h"
@@ -37,6 +38,7 @@ namespace subdiv::cli {
 namespace {
 
 struct CompareCommandOptions {
+  ReadOptions read;  ///< --weld-tolerance
   std::string input;
   std::string output;
   std::string png;
@@ -154,7 +156,7 @@ int run_compare(const CompareCommandOptions& opt) {
   if (!opt.png.empty()) picture_style(opt.picture);  // a malformed --size or --view fails before the work
   const std::vector<std::string> names = scheme_list(opt);
   PhaseClock clock;
-  const MeshFile input = read_mesh(opt.input);
+  const MeshFile input = read_mesh(opt.input, opt.read);
   print_warnings(opt.input, input.warnings);
   clock.lap("read");
 
@@ -211,7 +213,8 @@ int run_compare(const CompareCommandOptions& opt) {
 Command add_compare_command(CLI::App& app) {
   auto opt = std::make_shared<CompareCommandOptions>();
   CLI::App* cmd = app.add_subcommand("compare", "Show several schemes' refinements of a mesh side by side (web page, PNG)");
-  cmd->add_option("input", opt->input, "Mesh to refine (.obj, .ply or .off)")->required();
+  add_read_options(cmd, opt->read);
+  cmd->add_option("input", opt->input, "Mesh to refine (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("-o,--output", opt->output, "The web page to write (.html, self-contained)")->required();
   add_refinement_options(*cmd, opt->refinement,
                          "Schemes, comma-separated, or 'all' (the default: every surface scheme that takes the mesh)");

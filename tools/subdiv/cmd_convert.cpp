@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "read_options.h"
 #include "output_checks.h"
 #include "wording.h"
 #include "subdiv/core/error.h"
@@ -17,6 +18,7 @@ namespace subdiv::cli {
 namespace {
 
 struct ConvertOptions {
+  ReadOptions read;  ///< --weld-tolerance
   std::string input;
   std::string output;
   bool ascii = false;
@@ -34,16 +36,18 @@ void check_format_options(const ConvertOptions& opt) {
   if (opt.ascii && opt.big_endian) throw InvalidInputError("--ascii and --big-endian exclude each other");
   if (opt.big_endian && format != FileFormat::ply)
     throw InvalidInputError("--big-endian applies to PLY output, not to " + opt.output);
-  if (opt.no_tags && format != FileFormat::obj)
-    throw InvalidInputError("--no-tags applies to OBJ output (the only format with tag lines), not to " + opt.output);
-  if (opt.keep_hole_faces && format == FileFormat::obj)
-    throw InvalidInputError("--keep-hole-faces applies to PLY and OFF output; OBJ keeps hole faces with their tags");
+  const bool keeps_tags = format == FileFormat::obj || format == FileFormat::gltf || format == FileFormat::glb;
+  if (opt.no_tags && !keeps_tags)
+    throw InvalidInputError("--no-tags applies to OBJ and glTF output (the formats that keep tags), not to " + opt.output);
+  if (opt.keep_hole_faces && keeps_tags)
+    throw InvalidInputError("--keep-hole-faces applies to PLY, OFF and STL output; OBJ and glTF keep hole faces with "
+                            "their tags");
 }
 
 int run_convert(const ConvertOptions& opt) {
   check_output_path(opt.input, opt.output);
   check_format_options(opt);
-  const MeshFile file = read_mesh(opt.input);
+  const MeshFile file = read_mesh(opt.input, opt.read);
   const ValidationReport report = validate(file.mesh, &file.lines);
   if (opt.validate) require_valid(report, opt.input);
   print_warnings(opt.input, file.warnings);
@@ -60,6 +64,7 @@ int run_convert(const ConvertOptions& opt) {
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii
                       : opt.big_endian ? PlyEncoding::binary_big_endian : PlyEncoding::binary_little_endian;
+  wopt.stl_encoding = opt.ascii ? StlEncoding::ascii : StlEncoding::binary;
   wopt.write_tags = !opt.no_tags;
   wopt.hole_faces_as_faces = opt.keep_hole_faces;
   print_warnings(opt.output, write_mesh(file.mesh, opt.output, wopt));
@@ -72,20 +77,27 @@ int run_convert(const ConvertOptions& opt) {
 
 Command add_convert_command(CLI::App& app) {
   auto opt = std::make_shared<ConvertOptions>();
-  CLI::App* cmd = app.add_subcommand("convert", "Convert a mesh between OBJ, PLY and OFF (format from the extension)");
+  CLI::App* cmd = app.add_subcommand("convert", "Convert a mesh between OBJ, PLY, OFF, glTF and STL (format from the extension)");
+  add_read_options(cmd, opt->read);
   cmd->add_option("input", opt->input, "Mesh to read")->required();
   cmd->add_option("output", opt->output, "Mesh to write (written to a temporary file, then renamed)")->required();
-  cmd->add_flag("--ascii", opt->ascii, "PLY output in ASCII instead of binary little-endian");
+  cmd->add_flag("--ascii", opt->ascii, "PLY or STL output in ASCII instead of binary (little-endian)");
   cmd->add_flag("--big-endian", opt->big_endian, "PLY output in binary big-endian");
   cmd->add_flag("--validate", opt->validate,
                 "Refuse to convert a mesh that fails validation (without it: converted, with a warning)");
-  cmd->add_flag("--no-tags", opt->no_tags, "Do not write OBJ tag lines");
+  cmd->add_flag("--no-tags", opt->no_tags, "Do not write tags (OBJ tag lines, glTF extras)");
   cmd->add_flag("--keep-hole-faces", opt->keep_hole_faces,
-                "PLY and OFF: write faces tagged as holes as ordinary faces (by default they are left out, "
-                "with a warning: those formats have no hole tags)");
+                "PLY, OFF and STL: write faces tagged as holes as ordinary faces (by default they are left "
+                "out, with a warning: those formats have no hole tags)");
   cmd->footer(
-      "Example:\n"
-      "  subdiv convert data/meshes/cube.obj /tmp/cube.ply --ascii");
+      "glTF (.gltf, .glb) holds triangles: subdiv keeps the polygons, the vertices split at seams\n"
+      "and the tags in the primitive's extras and reads them back; other programs see triangles.\n"
+      "STL holds triangles, each with its own corners: they are welded into shared vertices on\n"
+      "reading (--weld-tolerance).\n"
+      "Examples:\n"
+      "  subdiv convert data/meshes/cube.obj /tmp/cube.ply --ascii\n"
+      "  subdiv convert data/meshes/cube.obj /tmp/cube.glb\n"
+      "  subdiv convert scan.stl /tmp/scan.obj --weld-tolerance 1e-6");
   return [opt] { return run_convert(*opt); };
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "commands.h"
+#include "read_options.h"
 #include "input_mesh.h"
 #include "output_checks.h"
 #include "command_report.h"
@@ -32,6 +33,7 @@ namespace {
 constexpr std::int64_t kMaxVerifyFaces = std::int64_t{1} << 28;
 
 struct DepthCommandOptions {
+  ReadOptions read;  ///< --weld-tolerance
   std::string input;
   double eps = 0.0;
   bool verify = false;
@@ -93,7 +95,7 @@ int run_depth(const DepthCommandOptions& opt) {
   const Scheme scheme = chosen_scheme(opt.refinement);
   const std::string name(scheme.name);
   PhaseClock clock;
-  MeshFile file = read_mesh(opt.input);
+  MeshFile file = read_mesh(opt.input, opt.read);
   print_warnings(opt.input, file.warnings);
   DepthOptions options;
   apply_refinement_options(opt.refinement, scheme, file, options.refine);
@@ -171,7 +173,8 @@ int run_depth(const DepthCommandOptions& opt) {
 Command add_depth_command(CLI::App& app) {
   auto opt = std::make_shared<DepthCommandOptions>();
   CLI::App* cmd = app.add_subcommand("depth", "Uniform steps needed to come within an accuracy of the limit surface");
-  cmd->add_option("input", opt->input, "Mesh (.obj, .ply or .off)")->required();
+  add_read_options(cmd, opt->read);
+  cmd->add_option("input", opt->input, "Mesh (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   add_refinement_options(*cmd, opt->refinement, "Scheme (see 'subdiv schemes'; 'subdiv schemes --matrix' says which have a bound)");
   cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of a control vertex to the limit surface")
       ->required()

@@ -10,6 +10,7 @@
 
 #include "command_report.h"
 #include "commands.h"
+#include "read_options.h"
 #include "report.h"
 #include "wording.h"
 #include "subdiv/io/mesh_io.h"
@@ -20,6 +21,7 @@ namespace subdiv::cli {
 namespace {
 
 struct InfoOptions {
+  ReadOptions read;  ///< --weld-tolerance
   std::string path;
   std::size_t max_issues = 20;
   bool json = false;
@@ -93,7 +95,7 @@ std::string info_text(const std::string& path, const MeshFile& file, const MeshS
 }
 
 int run_info(const InfoOptions& opt) {
-  const MeshFile file = read_mesh(opt.path);
+  const MeshFile file = read_mesh(opt.path, opt.read);
   ValidationOptions vopt;
   vopt.max_issues_per_kind = std::max<std::size_t>(opt.max_issues, 1);
   // Readers guarantee in-range indices, which is all the topology needs; any
@@ -122,7 +124,8 @@ int run_info(const InfoOptions& opt) {
 Command add_info_command(CLI::App& app) {
   auto opt = std::make_shared<InfoOptions>();
   CLI::App* cmd = app.add_subcommand("info", "Print counts, histograms, tags and a validation report for a mesh");
-  cmd->add_option("mesh", opt->path, "Mesh file (.obj, .ply or .off)")->required();
+  add_read_options(cmd, opt->read);
+  cmd->add_option("mesh", opt->path, "Mesh file (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("--max-issues", opt->max_issues, "Validation issues listed (and kept per kind)")
       ->capture_default_str()
       ->check(positive_number());

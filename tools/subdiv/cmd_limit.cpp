@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "read_options.h"
 #include "input_mesh.h"
 #include "memory_guard.h"
 #include "output_checks.h"
@@ -28,6 +29,7 @@ namespace subdiv::cli {
 namespace {
 
 struct LimitCommandOptions {
+  ReadOptions read;  ///< --weld-tolerance
   std::string input;
   std::string output;
   std::optional<int> isolation_levels;
@@ -60,7 +62,7 @@ int run_limit(const LimitCommandOptions& opt) {
                             " uses closed-form ones (refining only where they need it); add --masks generic");
 
   PhaseClock clock;
-  MeshFile file = read_mesh(opt.input);
+  MeshFile file = read_mesh(opt.input, opt.read);
   print_warnings(opt.input, file.warnings);
   LimitOptions options;
   apply_refinement_options(opt.refinement, *scheme, file, options.refine);
@@ -96,6 +98,7 @@ int run_limit(const LimitCommandOptions& opt) {
   }
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  wopt.stl_encoding = opt.ascii ? StlEncoding::ascii : StlEncoding::binary;
   wopt.threads = opt.refinement.threads;
   print_warnings(opt.output, write_mesh(out, opt.output, wopt));
   clock.lap("write");
@@ -175,7 +178,8 @@ int run_limit(const LimitCommandOptions& opt) {
 Command add_limit_command(CLI::App& app) {
   auto opt = std::make_shared<LimitCommandOptions>();
   CLI::App* cmd = app.add_subcommand("limit", "Move every vertex to its limit position under a scheme");
-  cmd->add_option("input", opt->input, "Mesh (.obj, .ply or .off)")->required();
+  add_read_options(cmd, opt->read);
+  cmd->add_option("input", opt->input, "Mesh (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
   add_refinement_options(*cmd, opt->refinement, "Scheme (see 'subdiv schemes')");
   cmd->add_option("-l,--levels", opt->levels,
@@ -192,7 +196,7 @@ Command add_limit_command(CLI::App& app) {
       ->check(CLI::Range(0, 6));
   cmd->add_flag("--normals", opt->normals, "Also write limit normals (from the tangent masks)");
   add_report_options(*cmd, opt->report, "Print the time of each phase");
-  cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
+  cmd->add_flag("--ascii", opt->ascii, "ASCII PLY or STL output instead of binary");
   cmd->add_flag("--no-memory-check", opt->no_memory_check,
                 "Refine -l levels even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(

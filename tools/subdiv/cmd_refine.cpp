@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "read_options.h"
 #include "input_mesh.h"
 #include "memory_guard.h"
 #include "output_checks.h"
@@ -30,6 +31,7 @@ namespace subdiv::cli {
 namespace {
 
 struct RefineCommandOptions {
+  ReadOptions read;  ///< --weld-tolerance
   std::string input;
   std::string output;
   int levels = 1;
@@ -58,7 +60,7 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
     throw InvalidInputError(opt.output + ": " + to_string(format_from_path(opt.output)) +
                             " has no place for polylines; write the refined curves to an .obj file");
 
-  const MeshFile file = read_mesh(opt.input);
+  const MeshFile file = read_mesh(opt.input, opt.read);
   print_warnings(opt.input, file.warnings);
   const PolygonMesh& mesh = file.mesh;
   if (mesh.face_count() > 0)
@@ -97,6 +99,7 @@ int run_curve_refine(const CurveScheme& registered, const RefineCommandOptions& 
   clock.lap("refine");
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  wopt.stl_encoding = opt.ascii ? StlEncoding::ascii : StlEncoding::binary;
   wopt.threads = opt.refinement.threads;
   print_warnings(opt.output, write_mesh(result, opt.output, wopt));
   clock.lap("write");
@@ -162,7 +165,7 @@ int run_refine(const RefineCommandOptions& opt) {
                                         to_string(SplitRule::sqrt3), to_string(scheme.split), name));
 
   PhaseClock clock;
-  MeshFile file = read_mesh(opt.input);
+  MeshFile file = read_mesh(opt.input, opt.read);
   print_warnings(opt.input, file.warnings);
   if (!file.mesh.polylines.empty()) {
     if (file.mesh.face_count() == 0)
@@ -206,6 +209,7 @@ int run_refine(const RefineCommandOptions& opt) {
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
+  wopt.stl_encoding = opt.ascii ? StlEncoding::ascii : StlEncoding::binary;
   wopt.threads = opt.refinement.threads;
   print_warnings(opt.output, write_mesh(result, opt.output, wopt));
   clock.lap("write");
@@ -237,7 +241,8 @@ int run_refine(const RefineCommandOptions& opt) {
 Command add_refine_command(CLI::App& app) {
   auto opt = std::make_shared<RefineCommandOptions>();
   CLI::App* cmd = app.add_subcommand("refine", "Uniformly refine a mesh with a subdivision scheme");
-  cmd->add_option("input", opt->input, "Mesh to refine (.obj, .ply or .off)")->required();
+  add_read_options(cmd, opt->read);
+  cmd->add_option("input", opt->input, "Mesh to refine (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the result (format from the extension)")->required();
   add_refinement_options(*cmd, opt->refinement, "Scheme, surface or curve (see 'subdiv schemes')");
   cmd->add_option("-l,--levels", opt->levels, "Refinement steps (quasi-4-8: binary steps, see --full-steps)")
@@ -250,7 +255,7 @@ Command add_refine_command(CLI::App& app) {
       ->check(CLI::Range(0, 64));
   cmd->add_flag("--full-steps", opt->full_steps,
                 "quasi-4-8: -l counts 4-8 steps, two binary steps each (default: binary steps)");
-  cmd->add_flag("--ascii", opt->ascii, "ASCII PLY output instead of binary");
+  cmd->add_flag("--ascii", opt->ascii, "ASCII PLY or STL output instead of binary");
   cmd->add_flag("--no-memory-check", opt->no_memory_check,
                 "Refine even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(

@@ -12,6 +12,7 @@
 
 #include "command_report.h"
 #include "commands.h"
+#include "read_options.h"
 #include "memory_guard.h"
 #include "output_checks.h"
 #include "picture_options.h"
@@ -31,6 +32,7 @@ namespace subdiv::cli {
 namespace {
 
 struct RenderCommandOptions {
+  ReadOptions read;  ///< --weld-tolerance
   std::string input;
   std::string output;
   int levels = 3;
@@ -55,7 +57,7 @@ int run_render(RenderCommandOptions& opt) {
   if (extension != ".png") throw InvalidInputError(opt.output + ": render writes PNG images (.png)");
 
   PhaseClock clock;
-  MeshFile file = read_mesh(opt.input);
+  MeshFile file = read_mesh(opt.input, opt.read);
   print_warnings(opt.input, file.warnings);
   const int levels = opt.levels_given ? opt.levels : (opt.scheme_given ? 3 : 0);
   const Scheme scheme = chosen_scheme(opt.refinement);
@@ -109,7 +111,8 @@ int run_render(RenderCommandOptions& opt) {
 Command add_render_command(CLI::App& app) {
   auto opt = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Draw a picture of the subdivision surface (PNG, no display needed)");
-  cmd->add_option("input", opt->input, "Mesh to draw (.obj, .ply or .off)")->required();
+  add_read_options(cmd, opt->read);
+  cmd->add_option("input", opt->input, "Mesh to draw (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("-o,--output", opt->output, "The PNG image to write")->required();
   add_refinement_options(*cmd, opt->refinement, "Scheme to refine with before drawing (see 'subdiv schemes')");
   cmd->add_option("-l,--levels", opt->levels,

@@ -17,9 +17,10 @@ void check_output_path(const std::string& input, const std::string& output) {
 }
 
 void check_ascii_applies(bool ascii, const std::string& output) {
-  if (ascii && format_from_path(output) != FileFormat::ply)
-    throw InvalidInputError("--ascii applies to PLY output, not to " + output + " (" +
-                            to_string(format_from_path(output)) + " is text already)");
+  const FileFormat format = format_from_path(output);
+  if (!ascii || format == FileFormat::ply || format == FileFormat::stl) return;
+  throw InvalidInputError("--ascii applies to PLY and STL output, not to " + output + " (" + to_string(format) +
+                          (format == FileFormat::glb ? " is binary by definition; .gltf is its text form)" : " is text already)"));
 }
 
 namespace {

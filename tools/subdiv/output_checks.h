@@ -12,7 +12,7 @@ namespace subdiv::cli {
 void check_output_path(const std::string& input, const std::string& output);
 
 /// Throws InvalidInputError when --ascii is given for an output that is not
-/// PLY (the only format with a binary encoding).
+/// PLY or STL (the formats with both encodings; glTF's are two extensions).
 void check_ascii_applies(bool ascii, const std::string& output);
 
 /// -q: warnings and progress lines are not printed; errors always are.

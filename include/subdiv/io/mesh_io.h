@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Reading and writing meshes: OBJ (with OpenSubdiv's tag lines), PLY (ASCII
-/// and binary, both endiannesses) and OFF. The format follows the extension.
+/// and binary, both endiannesses), OFF, glTF 2.0 (`.gltf` and `.glb`) and STL
+/// (ASCII and binary). The format follows the extension.
 
 #include <filesystem>
 #include <string>
@@ -17,14 +18,17 @@ enum class FileFormat {
   obj,  ///< Wavefront OBJ (`.obj`), with OpenSubdiv's tag lines
   ply,  ///< Stanford PLY (`.ply`), ASCII or binary
   off,  ///< Object File Format (`.off`), ASCII
+  gltf,  ///< glTF 2.0 as JSON (`.gltf`), buffers embedded or beside it
+  glb,   ///< glTF 2.0 binary container (`.glb`)
+  stl,   ///< STereoLithography (`.stl`), ASCII or binary: triangles only
 };
 
 /// The format named by the path's extension (case-insensitive).
 /// \param path the file's path; only its extension is read.
-/// \return the format for `.obj`, `.ply` or `.off`.
+/// \return the format for `.obj`, `.ply`, `.off`, `.gltf`, `.glb` or `.stl`.
 /// \throws InvalidInputError for any other extension, or none.
 FileFormat format_from_path(const std::filesystem::path& path);
-/// The format's name for messages: "OBJ", "PLY" or "OFF".
+/// The format's name for messages: "OBJ", "PLY", "OFF", "glTF", "GLB" or "STL".
 /// \param format the format.
 /// \return a static string; "?" for a value outside the enumeration.
 const char* to_string(FileFormat format) noexcept;
@@ -38,9 +42,21 @@ struct MeshFile {
   std::vector<std::string> warnings;  ///< one line per note, without the file's path
 };
 
+/// How read_mesh() reads the formats that store triangle soups or split
+/// vertices at attribute seams.
+struct ReadOptions {
+  /// STL, and glTF files that subdiv did not write: a corner whose position
+  /// differs from an earlier vertex's by at most this much in every
+  /// coordinate joins that vertex (the earliest such, which keeps its
+  /// position). 0 merges equal positions only; a negative value keeps every
+  /// file vertex apart (STL: three per triangle).
+  double weld_tolerance = 0.0;
+};
+
 /// Reads a mesh; the format follows the extension (format_from_path()).
 /// A parsed mesh may still be invalid for subdivision: run validate() on it.
 /// \param path the file to read.
+/// \param options how STL and glTF vertices are welded.
 /// \return the mesh, its source lines and the reader's notes.
 /// \throws InvalidInputError when the extension names no supported format.
 /// \throws IoError when the file cannot be read.
@@ -48,7 +64,7 @@ struct MeshFile {
 ///         malformed: bad numbers, truncation, zero or out-of-range indices,
 ///         impossible header counts.
 /// \throws std::bad_alloc if memory runs out.
-MeshFile read_mesh(const std::filesystem::path& path);
+MeshFile read_mesh(const std::filesystem::path& path, const ReadOptions& options = {});
 
 /// How a PLY file stores its elements.
 enum class PlyEncoding {
@@ -57,16 +73,25 @@ enum class PlyEncoding {
   ascii,                 ///< text, one element per line
 };
 
+/// How an STL file stores its triangles.
+enum class StlEncoding {
+  binary,  ///< 80-byte header, count, 50 bytes per triangle (float32)
+  ascii,   ///< `solid` ... `endsolid` text, positions to full double precision
+};
+
 /// What write_mesh() (and format_obj()) write, and how.
 struct WriteOptions {
   PlyEncoding ply_encoding = PlyEncoding::binary_little_endian;  ///< PLY only
-  bool write_tags = true;      ///< OBJ tag lines (the other formats have no place for tags)
-  /// OBJ and PLY: the channels each has a place for (OBJ: UVs, normals and
-  /// colours; PLY: normals, UVs and colours); false writes none.
+  StlEncoding stl_encoding = StlEncoding::binary;                ///< STL only
+  bool write_tags = true;      ///< OBJ tag lines and glTF's extras (the other formats have no place for tags)
+  /// OBJ, PLY and glTF: the channels each has a place for (OBJ: UVs, normals
+  /// and colours; PLY: normals, UVs and colours; glTF: one to four
+  /// components); false writes none.
   bool write_channels = true;
-  /// PLY and OFF have no place for hole tags: faces tagged as holes are left
-  /// out (they are not part of the surface), with a note, unless this asks
-  /// to write them as ordinary faces. OBJ keeps them, with their tags.
+  /// PLY, OFF and STL have no place for hole tags: faces tagged as holes are
+  /// left out (they are not part of the surface), with a note, unless this
+  /// asks to write them as ordinary faces. OBJ and glTF keep them, with
+  /// their tags.
   bool hole_faces_as_faces = false;
   /// Worker threads formatting text (OBJ, ASCII PLY, OFF); 0: all cores.
   /// The bytes written are the same for every count.
