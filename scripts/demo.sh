@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs subdiv on the bundled meshes:
-# inspects each one, converts it to PLY and OFF, refines it with
+# inspects each one, converts it to PLY, OFF, glTF and STL, refines it with
 # Catmull-Clark (and the triangle meshes with Loop), and moves its vertices
 # to their limit positions; then subdivides the cube and the tetrahedron with
 # every surface scheme (the survey's comparison), analyses Loop,
@@ -23,10 +23,13 @@ for mesh in data/meshes/*.obj; do
   "$subdiv" info "$mesh"
   "$subdiv" convert "$mesh" "out/$name.ply"
   "$subdiv" convert "$mesh" "out/$name.off"
+  "$subdiv" -q convert "$mesh" "out/$name.glb"  # polygons kept in subdiv's extras; viewers see triangles
+  "$subdiv" -q convert "$mesh" "out/$name.stl"
   if [ "$name" = "elephant" ] || [ "$name" = "tetrahedron" ]; then
     "$subdiv" refine "$mesh" -s loop -l 2 -o "out/${name}_loop2.obj"
   fi
   "$subdiv" refine "$mesh" -s catmull-clark -l 2 -o "out/${name}_catmull_clark2.obj"
+  "$subdiv" -q refine "out/$name.glb" -s catmull-clark -l 2 -o "out/${name}_catmull_clark2.glb"
   "$subdiv" limit "$mesh" -s catmull-clark --normals -o "out/${name}_catmull_clark_limit.obj"
   "$subdiv" render "$mesh" -s catmull-clark -l 3 --cage -o "out/${name}_catmull_clark3.png"
 done

@@ -183,7 +183,10 @@ std::vector<double> read_accessor(const tinygltf::Model& model, int index, const
   return values;
 }
 
+// Components per element; 0 for a matrix or an accessor that does not exist
+// (read_accessor() refuses those with the reason).
 int accessor_components(const tinygltf::Model& model, int index) {
+  if (index < 0 || static_cast<std::size_t>(index) >= model.accessors.size()) return 0;
   return component_count(model.accessors[static_cast<std::size_t>(index)].type);
 }
 
@@ -261,10 +264,15 @@ std::vector<std::uint32_t> primitive_triangles(const tinygltf::Model& model, con
   std::vector<std::uint32_t> strip;
   if (p.indices >= 0) {
     const std::vector<double> indices = read_accessor(model, p.indices, path, what + " indices");
-    if (accessor_components(model, p.indices) != 1) fail(path, what + ": the indices are not scalars");
+    const tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(p.indices)];  // read_accessor checked it
+    if (accessor_components(model, p.indices) != 1 || a.normalized ||
+        (a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+         a.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+      fail(path, what + ": the indices are not unsigned integer scalars");
     strip.reserve(indices.size());
     for (const double i : indices) {
-      if (!(i >= 0.0 && i < static_cast<double>(vertex_count)) || i != std::floor(i))
+      if (i >= static_cast<double>(vertex_count))  // unsigned integers: never negative or fractional
         fail(path, what + ": index " + std::to_string(static_cast<long long>(i)) + " is out of range (" +
                        std::to_string(vertex_count) + " vertices)");
       strip.push_back(static_cast<std::uint32_t>(i));
@@ -323,8 +331,8 @@ Soup read_soup(const tinygltf::Model& model, const std::vector<std::string>& wan
       const std::string what = "mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(pi);
       const auto position = p.attributes.find("POSITION");
       if (position == p.attributes.end()) fail(path, what + " has no POSITION");
-      if (accessor_components(model, position->second) != 3) fail(path, what + ": POSITION is not VEC3");
       const std::vector<double> xyz = read_accessor(model, position->second, path, what + " POSITION");
+      if (accessor_components(model, position->second) != 3) fail(path, what + ": POSITION is not VEC3");
       const std::size_t count = xyz.size() / 3, base = soup.positions.size();
       if (base + count > static_cast<std::size_t>(std::numeric_limits<Index>::max()))
         fail(path, "more vertices than subdiv's 32-bit indices hold");
@@ -343,11 +351,13 @@ Soup read_soup(const tinygltf::Model& model, const std::vector<std::string>& wan
       }
       for (Attribute& attribute : soup.attributes) {
         const auto found = p.attributes.find(attribute.attribute);
-        const int width = found == p.attributes.end() ? 0 : accessor_components(model, found->second);
+        if (found == p.attributes.end()) attribute.complete = false;
+        if (!attribute.complete) continue;
+        std::vector<double> values = read_accessor(model, found->second, path, what + " " + attribute.attribute);
+        const int width = accessor_components(model, found->second);
         if (width == 0 || (attribute.components != 0 && width != attribute.components)) attribute.complete = false;
         if (!attribute.complete) continue;
         attribute.components = width;
-        std::vector<double> values = read_accessor(model, found->second, path, what + " " + attribute.attribute);
         if (values.size() != count * static_cast<std::size_t>(width))
           fail(path, what + ": " + attribute.attribute + " has another count than POSITION");
         attribute.values.insert(attribute.values.end(), values.begin(), values.end());
