@@ -47,9 +47,9 @@ struct ParentLevel {
   std::span<const char> held = {};
   // The masks' views, built once per level rather than per child vertex.
   LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle, {}, parameters, level, creasing.vertex_rule,
-                 level_split, held};
+                 level_split, held, mesh.tags.triangle_subdivision};
   LevelView below{topology, creasing.edge_sharpness, 1.0, sector_angle, creasing.child_edge_sharpness,  // Chaikin: per edge end
-                  parameters, level, creasing.child_vertex_rule, level_split, held};
+                  parameters, level, creasing.child_vertex_rule, level_split, held, mesh.tags.triangle_subdivision};
   const LevelView& view() const { return here; }
   const LevelView& child_view() const { return below; }  // one level down
 };

@@ -21,11 +21,18 @@
 // four other vertices of its two quads), gamma(theta_k) = 3/8 - 1/4
 // cos(theta_k); the regular boundary (k = 2, theta = pi/2) keeps 3/8, 3/8.
 // In the face-point form below, the ends' 1/4 each move by the same amount.
+// OpenSubdiv's smooth triangle rule (the `smoothtriangles smooth` tag,
+// Sdc::Options::TRI_SUB_SMOOTH; Sdc::Scheme<SCHEME_CATMARK>::
+// assignSmoothMaskForEdge, after Hbr): a smooth edge between two faces, one
+// or both of them triangles, weights each face point with
+// w = (w0 + w1) / 2, w_i = 0.47 for a triangle and 1/4 otherwise, and each
+// end with (1 - 2w) / 2. Refined levels have no triangles.
 
 #include "subdiv/rules/catmull_clark.h"
 
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "rule_helpers.h"
 
@@ -37,14 +44,26 @@ double gamma_of(double theta) { return catmull_clark_gamma(theta); }
 
 void face_point(const LevelView& level, Index f, MaskBuilder& mask) { detail::add_face_average(level, f, 1.0, mask); }
 
+// The weight of each of a smooth edge's two face points.
+double edge_face_weight(const LevelView& level, std::span<const Index> sides) {
+  if (level.triangle_subdivision != TriangleSubdivision::smooth) return 0.25;
+  constexpr double kTriangleWeight = 0.47;  // OpenSubdiv's CATMARK_SMOOTH_TRI_EDGE_WEIGHT
+  double sum = 0.0;
+  for (const Index c : sides)
+    sum += level.topology.face_size(level.topology.corner_face(c)) == 3 ? kTriangleWeight : 0.25;
+  return sum / 2.0;
+}
+
 void edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBuilder& mask) {
   const auto sides = level.topology.edge_corners(e);
   if (rule == EdgeRule::crease || sides.size() != 2) return detail::add_edge_midpoint(level, e, mask);
   const auto [a, b] = level.topology.edge_vertices(e);
   const double shift = detail::piecewise_smooth_shift(level, e, a, b, gamma_of);
-  mask.add(a, 0.25 + shift);
-  mask.add(b, 0.25 - shift);
-  for (const Index c : sides) mask.add_face_point(level.topology.corner_face(c), 0.25);
+  const double face_weight = edge_face_weight(level, sides);
+  const double end_weight = (1.0 - 2.0 * face_weight) / 2.0;
+  mask.add(a, end_weight + shift);
+  mask.add(b, end_weight - shift);
+  for (const Index c : sides) mask.add_face_point(level.topology.corner_face(c), face_weight);
 }
 
 void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder& mask) {

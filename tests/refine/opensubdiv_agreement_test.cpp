@@ -182,7 +182,9 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolygonMesh& mesh, Sdc:
   options.SetVtxBoundaryInterpolation(their_boundary(mesh.tags));
   options.SetCreasingMethod(mesh.tags.crease_method == CreaseMethod::chaikin ? Sdc::Options::CREASE_CHAIKIN
                                                                             : Sdc::Options::CREASE_UNIFORM);
-  options.SetTriangleSubdivision(Sdc::Options::TRI_SUB_CATMARK);
+  options.SetTriangleSubdivision(mesh.tags.triangle_subdivision == TriangleSubdivision::smooth
+                                     ? Sdc::Options::TRI_SUB_SMOOTH
+                                     : Sdc::Options::TRI_SUB_CATMARK);
   std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
       desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(scheme, options)));
   if (!refiner) return refiner;
@@ -237,12 +239,19 @@ bool same_cycle(std::span<const Index> a, Far::ConstIndexArray b) {
   return false;
 }
 
+// OpenSubdiv's smooth triangle rule (TRI_SUB_SMOOTH) has no regression shape
+// of its own: the shape with triangles next to quads, its tag switched to it.
+constexpr const char* kSmoothTrianglesShape = "catmark_smoothtris0";
+constexpr const char* kSmoothTrianglesVariant = "catmark_smoothtris0_tri_sub_smooth";
+
 std::vector<std::string> shape_names() {
   std::vector<std::string> names;
   std::error_code ec;
   if (fs::is_directory(shape_dir(), ec))
     for (const auto& entry : fs::directory_iterator(shape_dir(), ec))
       if (entry.path().extension() == ".obj") names.push_back(entry.path().stem().string());
+  if (std::find(names.begin(), names.end(), kSmoothTrianglesShape) != names.end())
+    names.push_back(kSmoothTrianglesVariant);
   std::sort(names.begin(), names.end());
   if (names.empty()) names.push_back("collection_absent");  // the test skips, saying so
   return names;
@@ -252,7 +261,8 @@ class OpenSubdivAgreement : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   const std::string shape = GetParam();
-  const fs::path path = shape_dir() / (shape + ".obj");
+  const bool smooth_triangles = shape == kSmoothTrianglesVariant;
+  const fs::path path = shape_dir() / ((smooth_triangles ? std::string(kSmoothTrianglesShape) : shape) + ".obj");
   if (!fs::exists(path))
     GTEST_SKIP() << "OpenSubdiv regression shapes not found at " << shape_dir()
                  << " (the shared collection sits beside the repository)";
@@ -260,6 +270,7 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   ASSERT_NE(scheme.ours, nullptr) << "no scheme for " << shape << " (expected catmark_, loop_ or bilinear_)";
 
   PolygonMesh mesh = read_mesh(path).mesh;
+  if (smooth_triangles) mesh.tags.triangle_subdivision = TriangleSubdivision::smooth;
   if (const std::string why = unsupported_feature(mesh); !why.empty())
     GTEST_SKIP() << shape << ": not supported by subdiv yet: " << why;
   round_sharpness_to_float(mesh.tags);

@@ -117,5 +117,71 @@ TEST(CatmullClark, RegularGridReproducesTheBicubicBSpline) {
   EXPECT_EQ(checked, 13 * 13);  // parameters 3.5 .. 6.5 in steps of 1/4
 }
 
+// A square pyramid: the base quad and four triangles, all of its edges smooth.
+PolygonMesh pyramid(bool smooth_triangles) {
+  PolygonMesh mesh = make_mesh({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {1, 1, 1.5}},
+                               {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
+  if (smooth_triangles) {
+    mesh.tags.triangle_subdivision = TriangleSubdivision::smooth;
+    mesh.tags.triangle_subdivision_set = true;
+  }
+  return mesh;
+}
+
+// OpenSubdiv's TRI_SUB_SMOOTH edge rule (Sdc catmarkScheme.h): face points
+// weighted w = (w0 + w1) / 2 with 0.47 for a triangle, 1/4 for a quad; ends
+// (1 - 2w) / 2. A face point is its face's centroid.
+TEST(CatmullClark, SmoothTriangleRuleWeightsFacePointsNextToTriangles) {
+  const PolygonMesh mesh = pyramid(true);
+  const StencilTable t = grid_stencils(mesh);
+  // Between two triangles (0, 1, 4) and (3, 0, 4): w = 0.47, ends 0.03.
+  const auto apex_edge = test::merged_row(t, edge_point(mesh, 0, 4));
+  ASSERT_EQ(apex_edge.size(), 4u);
+  EXPECT_NEAR(apex_edge.at(0), 0.03 + 2 * 0.47 / 3, 1e-15);
+  EXPECT_NEAR(apex_edge.at(4), 0.03 + 2 * 0.47 / 3, 1e-15);
+  EXPECT_NEAR(apex_edge.at(1), 0.47 / 3, 1e-15);
+  EXPECT_NEAR(apex_edge.at(3), 0.47 / 3, 1e-15);
+  // Between the triangle (0, 1, 4) and the quad: w = 0.36, ends 0.14.
+  const auto base_edge = test::merged_row(t, edge_point(mesh, 0, 1));
+  ASSERT_EQ(base_edge.size(), 5u);
+  EXPECT_NEAR(base_edge.at(0), 0.14 + 0.36 / 3 + 0.36 / 4, 1e-15);
+  EXPECT_NEAR(base_edge.at(1), 0.14 + 0.36 / 3 + 0.36 / 4, 1e-15);
+  EXPECT_NEAR(base_edge.at(4), 0.36 / 3, 1e-15);
+  EXPECT_NEAR(base_edge.at(2), 0.36 / 4, 1e-15);
+  EXPECT_NEAR(base_edge.at(3), 0.36 / 4, 1e-15);
+  for (Index row = 0; row < t.row_count(); ++row) {
+    double sum = 0.0;
+    for (const auto& [vertex, weight] : test::merged_row(t, row)) sum += weight;
+    EXPECT_NEAR(sum, 1.0, 1e-15) << "row " << row;
+  }
+}
+
+TEST(CatmullClark, SmoothTriangleRuleLeavesOtherPointsAlone) {
+  const StencilTable plain = grid_stencils(pyramid(false));
+  const StencilTable smooth = grid_stencils(pyramid(true));
+  const PolygonMesh mesh = pyramid(false);
+  const Index edge_points_begin = mesh.face_count(), vertex_points_begin = edge_points_begin + MeshTopology(mesh).edge_count();
+  ASSERT_EQ(plain.row_count(), smooth.row_count());
+  for (Index row = 0; row < plain.row_count(); ++row) {
+    const bool is_edge_point = row >= edge_points_begin && row < vertex_points_begin;
+    // Every edge of the pyramid touches a triangle: every edge point moves, nothing else.
+    EXPECT_EQ(test::merged_row(plain, row) != test::merged_row(smooth, row), is_edge_point) << "row " << row;
+  }
+  // A mesh without triangles refines the same with the tag or without.
+  PolygonMesh cube = test::cube();
+  const StencilTable before = grid_stencils(cube);
+  cube.tags.triangle_subdivision = TriangleSubdivision::smooth;
+  const StencilTable after = grid_stencils(cube);
+  for (Index row = 0; row < before.row_count(); ++row)
+    EXPECT_EQ(test::merged_row(before, row), test::merged_row(after, row)) << "row " << row;
+  // The refined mesh has no triangles: the second level is the same either way.
+  RefineOptions two;
+  two.levels = 2;
+  const std::vector<StencilTable> levels_plain = refine_stencils(pyramid(false), catmull_clark_scheme(), two);
+  const std::vector<StencilTable> levels_smooth = refine_stencils(pyramid(true), catmull_clark_scheme(), two);
+  for (Index row = 0; row < levels_plain.at(1).row_count(); ++row)
+    EXPECT_EQ(test::merged_row(levels_plain.at(1), row), test::merged_row(levels_smooth.at(1), row)) << "row " << row;
+}
+
 }  // namespace
 }  // namespace subdiv

@@ -11,7 +11,6 @@ namespace subdiv::test {
 std::filesystem::path opensubdiv_shape_dir() { return std::filesystem::path(shared_mesh_dir()) / "opensubdiv"; }
 
 std::string unsupported_feature(const PolygonMesh& mesh) {
-  if (mesh.tags.triangle_subdivision == TriangleSubdivision::smooth) return "t smoothtriangles smooth";
   for (const RawTag& t : mesh.tags.other)
     if (t.name == "vertexedit" || t.name == "edgeedit" || t.name == "faceedit")
       return "hierarchical edits (t " + t.name + ")";

@@ -186,6 +186,9 @@ struct LevelView {
   /// Per vertex, whether the scheme keeps it in place
   /// (SchemeMasks::held_vertices); empty where the masks declare none.
   std::span<const char> held = {};
+  /// Catmull-Clark's edge rule where a triangle meets the edge: the level's
+  /// `smoothtriangles` tag (OpenSubdiv's Sdc::Options::TriangleSubdivision).
+  TriangleSubdivision triangle_subdivision = TriangleSubdivision::catmark;
 
   /// Whether edge \p e is sharp for the rule being evaluated.
   /// \param e an edge of `topology`.
