@@ -127,6 +127,9 @@ RefineOptions refine_options(const py::dict& options) {
       o.corner_angles = enum_named(key, value.cast<std::string>(), {CornerAngles::fixed, CornerAngles::measured});
     } else if (key == "crease_method") {
       o.crease_method = enum_named(key, value.cast<std::string>(), {CreaseMethod::uniform, CreaseMethod::chaikin});
+    } else if (key == "triangle_subdivision") {
+      o.triangle_subdivision = enum_named(key, value.cast<std::string>(),
+                                          {TriangleSubdivision::catmark, TriangleSubdivision::smooth});
     } else if (key == "flatness") {
       o.flatness = value.cast<double>();
     } else if (key == "allow_non_manifold") {
@@ -138,7 +141,7 @@ RefineOptions refine_options(const py::dict& options) {
       o.regular_grids = value.cast<bool>();
     } else {
       throw InvalidInputError("unknown option '" + key +
-                              "' (boundary, boundary_rules, corner_angles, crease_method, flatness, "
+                              "' (boundary, boundary_rules, corner_angles, crease_method, triangle_subdivision, flatness, "
                               "allow_non_manifold, threads, regular_grids)");
     }
   }

@@ -31,6 +31,10 @@ CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& option
   return options.crease_method.value_or(mesh.tags.crease_method);
 }
 
+TriangleSubdivision triangle_subdivision_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept {
+  return options.triangle_subdivision.value_or(mesh.tags.triangle_subdivision);
+}
+
 namespace {
 
 // What the masks of one level see: the parent and its creasing. The parent
@@ -45,11 +49,12 @@ struct ParentLevel {
   int level = 0;  ///< the parent's, 0 for the control mesh
   const SplitMap* level_split = nullptr;  ///< a composite scheme's later steps: its first step's split
   std::span<const char> held = {};
+  TriangleSubdivision triangle_subdivision = TriangleSubdivision::catmark;
   // The masks' views, built once per level rather than per child vertex.
   LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle, {}, parameters, level, creasing.vertex_rule,
-                 level_split, held, mesh.tags.triangle_subdivision};
+                 level_split, held, triangle_subdivision};
   LevelView below{topology, creasing.edge_sharpness, 1.0, sector_angle, creasing.child_edge_sharpness,  // Chaikin: per edge end
-                  parameters, level, creasing.child_vertex_rule, level_split, held, mesh.tags.triangle_subdivision};
+                  parameters, level, creasing.child_vertex_rule, level_split, held, triangle_subdivision};
   const LevelView& view() const { return here; }
   const LevelView& child_view() const { return below; }  // one level down
 };
@@ -167,10 +172,15 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, int l
     level.child.tags.crease_method = method;
     level.child.tags.crease_method_set = true;
   }
+  const TriangleSubdivision triangles = triangle_subdivision_of(parent, options);
+  if (level.child.tags.triangle_subdivision != triangles) {  // the same for the triangle rule
+    level.child.tags.triangle_subdivision = triangles;
+    level.child.tags.triangle_subdivision_set = true;
+  }
   level.flatness = detail::flatness_sites(scheme, topology, creasing, sector_angle, level.map, options);
   std::vector<char> held;
   if (scheme.masks.held_vertices) held = scheme.masks.held_vertices(parent, topology, scheme.parameters);
-  fn(ParentLevel{parent, topology, creasing, sector_angle, scheme.parameters, l, level_split, held}, level);
+  fn(ParentLevel{parent, topology, creasing, sector_angle, scheme.parameters, l, level_split, held, triangles}, level);
   return level;
 }
 

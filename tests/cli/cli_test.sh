@@ -114,6 +114,14 @@ printf 'solid x\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n     
 run stl-bad 1 info "$work/bad.stl" && stderr_one_line stl-bad && stderr_has stl-bad "bad.stl:5"
 printf '{"asset": {"version": "2.0"}, "buffers": [{"uri": "/dev/zero", "byteLength": 16}]}' >"$work/bad.gltf"
 run gltf-bad 1 info "$work/bad.gltf" && stderr_one_line gltf-bad && stderr_has gltf-bad "bad.gltf: "
+# Catmull-Clark's edge rule next to triangles: the option changes the output, and applies to catmull-clark only.
+printf 'v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nv 1 1 1.5\nf 1 4 3 2\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n' >"$work/pyramid.obj"
+run triangle-rule-catmark 0 refine "$work/pyramid.obj" -o "$work/pyramid_catmark.obj" --triangle-rule catmark
+run triangle-rule-smooth 0 refine "$work/pyramid.obj" -o "$work/pyramid_smooth.obj" --triangle-rule smooth
+cmp -s "$work/pyramid_catmark.obj" "$work/pyramid_smooth.obj" && fail "--triangle-rule smooth changed nothing" || pass
+grep -q "^t smoothtriangles 0/0/1 smooth" "$work/pyramid_smooth.obj" && pass || fail "--triangle-rule: the output's tag does not name the rule"
+run triangle-rule-loop 1 refine "$work/pyramid.obj" -s loop -o "$work/x.obj" --triangle-rule smooth &&
+  stderr_has triangle-rule-loop "--triangle-rule applies to catmull-clark"
 [ "$(sha256sum "$work/in.obj")" = "$before" ] && pass || fail "the input file changed"
 leftovers=$(find "$work" -name '*.tmp-*' | wc -l)
 [ "$leftovers" -eq 0 ] && pass || fail "temporary files left behind"

@@ -209,3 +209,17 @@ def test_results_pickle():
     assert adaptive.mesh.vertex_count == len(adaptive.source_levels) == original.mesh.vertex_count
     np.testing.assert_array_equal(adaptive.mesh.points, original.mesh.points)
     np.testing.assert_array_equal(adaptive.distances, original.distances)
+
+
+def test_triangle_subdivision_option():
+    pyramid = subdiv.Mesh(np.array([[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [1, 1, 1.5]], dtype=float),
+                          [[0, 3, 2, 1], [0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]])
+    plain = subdiv.refine(pyramid, "catmull-clark", 1).mesh.points
+    smooth = subdiv.refine(pyramid, "catmull-clark", 1, triangle_subdivision="smooth").mesh.points
+    assert not np.array_equal(plain, smooth)
+    # The edge point between the triangles (0, 1, 4) and (3, 0, 4): 0.03 on each end, 0.47 on each face point.
+    centroid = lambda *v: pyramid.points[list(v)].mean(axis=0)
+    expected = 0.03 * (pyramid.points[0] + pyramid.points[4]) + 0.47 * (centroid(0, 1, 4) + centroid(3, 0, 4))
+    assert np.isclose(smooth, expected, rtol=0, atol=1e-14).all(axis=1).any()
+    with pytest.raises(subdiv.InvalidInputError, match="triangle_subdivision='round'"):
+        subdiv.refine(pyramid, "catmull-clark", 1, triangle_subdivision="round")

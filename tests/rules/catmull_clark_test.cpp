@@ -183,5 +183,25 @@ TEST(CatmullClark, SmoothTriangleRuleLeavesOtherPointsAlone) {
     EXPECT_EQ(test::merged_row(levels_plain.at(1), row), test::merged_row(levels_smooth.at(1), row)) << "row " << row;
 }
 
+TEST(CatmullClark, TriangleRuleOptionOverridesTheTag) {
+  RefineOptions smooth;
+  smooth.triangle_subdivision = TriangleSubdivision::smooth;
+  RefineOptions catmark;
+  catmark.triangle_subdivision = TriangleSubdivision::catmark;
+  const StencilTable tagged = grid_stencils(pyramid(true));
+  const StencilTable untagged = grid_stencils(pyramid(false));
+  const StencilTable by_option = refine_stencils(pyramid(false), catmull_clark_scheme(), smooth).at(0);
+  const StencilTable overridden = refine_stencils(pyramid(true), catmull_clark_scheme(), catmark).at(0);
+  for (Index row = 0; row < tagged.row_count(); ++row) {
+    EXPECT_EQ(test::merged_row(by_option, row), test::merged_row(tagged, row)) << "row " << row;
+    EXPECT_EQ(test::merged_row(overridden, row), test::merged_row(untagged, row)) << "row " << row;
+  }
+  // The refined mesh's tags name the rule it was made with.
+  const PolygonMesh child = refine(pyramid(false), catmull_clark_scheme(), smooth);
+  EXPECT_EQ(child.tags.triangle_subdivision, TriangleSubdivision::smooth);
+  EXPECT_TRUE(child.tags.triangle_subdivision_set);
+  EXPECT_FALSE(refine(pyramid(false), catmull_clark_scheme(), {}).tags.triangle_subdivision_set);
+}
+
 }  // namespace
 }  // namespace subdiv

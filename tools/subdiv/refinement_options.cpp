@@ -5,6 +5,7 @@
 
 #include "input_mesh.h"
 #include "subdiv/core/error.h"
+#include "subdiv/rules/catmull_clark.h"
 #include "subdiv/rules/quasi_4_8.h"
 
 namespace subdiv::cli {
@@ -44,6 +45,10 @@ void add_refinement_options(CLI::App& cmd, RefinementOptionValues& values, const
   cmd.add_option("--crease-method", values.crease_method,
                  "Semi-sharp crease rule, overriding the file's creasemethod tag (default: the tag, else uniform)")
       ->check(CLI::IsMember(crease_method_names()));
+  cmd.add_option("--triangle-rule", values.triangle_rule,
+                 "catmull-clark: the edge rule next to triangles, overriding the file's smoothtriangles tag: catmark, "
+                 "or OpenSubdiv's smooth (default: the tag, else catmark)")
+      ->check(CLI::IsMember({to_string(TriangleSubdivision::catmark), to_string(TriangleSubdivision::smooth)}));
   add_rule_options(cmd, values.rules);
   cmd.add_option("--crease", values.creases,
                  "Tag edge A,B (0-based vertices) as infinitely sharp (repeatable); quasi-4-8 does not smooth it")
@@ -83,11 +88,21 @@ void apply_refinement_options(const RefinementOptionValues& values, const Scheme
   if (values.boundary == "edge-only") options.boundary = BoundaryInterpolation::edge_only;
   else if (values.boundary == "edge-and-corner") options.boundary = BoundaryInterpolation::edge_and_corner;
   if (const auto method = crease_method_named(values.crease_method)) options.crease_method = *method;
+  if (!values.triangle_rule.empty()) {
+    if (scheme.name != catmull_clark_scheme().name)
+      throw InvalidInputError("--triangle-rule applies to " + std::string(catmull_clark_scheme().name) +
+                              " (the only scheme with a rule for triangles among quads), not to " +
+                              std::string(scheme.name));
+    options.triangle_subdivision = values.triangle_rule == to_string(TriangleSubdivision::smooth)
+                                       ? TriangleSubdivision::smooth
+                                       : TriangleSubdivision::catmark;
+  }
 }
 
 const char* surface_option_given(const RefinementOptionValues& values) {
   if (!values.boundary.empty()) return "--boundary";
   if (!values.crease_method.empty()) return "--crease-method";
+  if (!values.triangle_rule.empty()) return "--triangle-rule";
   if (values.allow_non_manifold) return "--allow-non-manifold";
   if (values.triangulate) return "--triangulate";
   if (values.rules.boundary_rules != "standard") return "--boundary-rules";

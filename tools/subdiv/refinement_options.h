@@ -25,6 +25,7 @@ struct RefinementOptionValues {
   std::string quasi_boundary;  ///< quasi-4-8: fixed or smoothed
   std::string boundary;        ///< edge-only, edge-and-corner, or empty: the file's tag
   std::string crease_method;   ///< empty: the file's tag
+  std::string triangle_rule;   ///< catmark or smooth; empty: the file's tag
   RuleOptionValues rules;
   std::vector<std::string> creases;  ///< --crease A,B: infinitely sharp edge tags
   bool allow_non_manifold = false;

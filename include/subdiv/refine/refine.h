@@ -66,6 +66,10 @@ struct RuleOptions {
   /// semi-sharp edges; creasing.h). The refined levels' tags then name this
   /// method, since their crease sharpness was subdivided by it.
   std::optional<CreaseMethod> crease_method;
+  /// Overrides the mesh's `smoothtriangles` tag (Catmull-Clark's edge rule
+  /// next to triangles, docs/schemes/catmull-clark.md); the refined levels'
+  /// tags then name it.
+  std::optional<TriangleSubdivision> triangle_subdivision;
 };
 
 /// The boundary interpolation refinement uses on `mesh`: the option's
@@ -80,6 +84,12 @@ BoundaryInterpolation boundary_of(const PolygonMesh& mesh, const RuleOptions& op
 /// \param options the rule choices.
 /// \return the crease method.
 CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept;
+/// The triangle rule refinement uses on `mesh`: the option's override, else
+/// the mesh's `smoothtriangles` tag.
+/// \param mesh the mesh (its tags are read).
+/// \param options the rule choices.
+/// \return the triangle rule.
+TriangleSubdivision triangle_subdivision_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept;
 
 /// A refinement: the rule choices, and the run controls below, none of
 /// which changes the surface made.
