@@ -315,12 +315,12 @@ struct Soup {
   std::vector<Attribute> attributes;
 };
 
-Soup read_soup(const tinygltf::Model& model, const std::vector<std::string>& wanted, const std::string& path,
-               std::vector<std::string>& warnings) {
+Soup read_soup(const tinygltf::Model& model, const std::vector<Instance>& drawn, const std::vector<std::string>& wanted,
+               const std::string& path, std::vector<std::string>& warnings) {
   Soup soup;
   for (const std::string& a : wanted) soup.attributes.push_back({a, 0, {}, true});
   std::size_t skipped = 0;
-  for (const Instance& instance : instances(model, path)) {
+  for (const Instance& instance : drawn) {
     const tinygltf::Mesh& mesh = model.meshes[static_cast<std::size_t>(instance.mesh)];
     for (std::size_t pi = 0; pi < mesh.primitives.size(); ++pi) {
       const tinygltf::Primitive& p = mesh.primitives[pi];
@@ -549,8 +549,8 @@ MeshFile parse_gltf(std::string_view bytes, const std::string& path, bool binary
   std::vector<std::string> wanted{"TEXCOORD_0", "COLOR_0", "NORMAL"};
   std::optional<Extras> extras;
   // subdiv's extras describe a file of one primitive; they name the attributes to read.
+  const std::vector<Instance> all = instances(model, path);
   const auto single = [&]() -> const tinygltf::Primitive* {
-    const std::vector<Instance> all = instances(model, path);
     if (all.size() != 1) return nullptr;
     const tinygltf::Mesh& m = model.meshes[static_cast<std::size_t>(all.front().mesh)];
     return m.primitives.size() == 1 ? &m.primitives.front() : nullptr;
@@ -561,7 +561,7 @@ MeshFile parse_gltf(std::string_view bytes, const std::string& path, bool binary
       for (const Extras::Channel& c : extras->channels)
         if (std::find(wanted.begin(), wanted.end(), c.attribute) == wanted.end()) wanted.push_back(c.attribute);
   }
-  const Soup soup = read_soup(model, wanted, path, file.warnings);
+  const Soup soup = read_soup(model, all, wanted, path, file.warnings);
   if (extras) {
     std::string why;
     if (std::optional<PolygonMesh> mesh = mesh_from_extras(soup, *extras, path, why)) {

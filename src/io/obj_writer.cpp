@@ -161,11 +161,7 @@ std::string format_obj(const PolygonMesh& mesh, const WriteOptions& options, std
   append_lines(out, static_cast<std::size_t>(mesh.vertex_count()), threads, [&](std::string& text, std::size_t v) {
     const Vec3 p = mesh.positions[v];
     text += "v ";
-    append_number(text, p.x);
-    text += ' ';
-    append_number(text, p.y);
-    text += ' ';
-    append_number(text, p.z);
+    detail::append_point(text, p);
     if (color) {
       for (std::size_t i = 0; i < 3; ++i) {
         text += ' ';

@@ -8,6 +8,7 @@ namespace subdiv {
 std::string format_off(const PolygonMesh& mesh, std::vector<std::string>* warnings, int threads) {
   using detail::append_lines;
   using detail::append_number;
+  using detail::append_point;
   check_face_arrays(mesh);
   if (warnings) {
     for (const auto& ch : mesh.vertex_channels)
@@ -25,12 +26,7 @@ std::string format_off(const PolygonMesh& mesh, std::vector<std::string>* warnin
   append_number(out, mesh.face_count());
   out += " 0\n";
   append_lines(out, mesh.positions.size(), threads, [&](std::string& text, std::size_t v) {
-    const Vec3& p = mesh.positions[v];
-    append_number(text, p.x);
-    text += ' ';
-    append_number(text, p.y);
-    text += ' ';
-    append_number(text, p.z);
+    append_point(text, mesh.positions[v]);
     text += '\n';
   });
   append_lines(out, static_cast<std::size_t>(mesh.face_count()), threads, [&](std::string& text, std::size_t f) {

@@ -19,6 +19,7 @@ namespace {
 
 using detail::append_lines;
 using detail::append_number;
+using detail::append_point;
 
 /// Shortest text that reads back as the same float.
 void append_float(std::string& out, float value) {
@@ -112,12 +113,7 @@ std::string format_ply(const PolygonMesh& mesh, PlyEncoding encoding, std::vecto
   if (encoding == PlyEncoding::ascii) {
     out.reserve(out.size() + nv * 64 + static_cast<std::size_t>(mesh.corner_count()) * 8);
     append_lines(out, nv, threads, [&](std::string& text, std::size_t v) {
-      const Vec3 p = mesh.positions[v];
-      append_number(text, p.x);
-      text += ' ';
-      append_number(text, p.y);
-      text += ' ';
-      append_number(text, p.z);
+      append_point(text, mesh.positions[v]);
       if (normal)
         for (std::size_t i = 0; i < 3; ++i) {
           text += ' ';

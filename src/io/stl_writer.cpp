@@ -88,11 +88,7 @@ Vec3 unit_normal(Vec3 a, Vec3 b, Vec3 c) {
 }
 
 void append_vec3(std::string& out, Vec3 p) {
-  append_number(out, p.x);
-  out += ' ';
-  append_number(out, p.y);
-  out += ' ';
-  append_number(out, p.z);
+  detail::append_point(out, p);
   out += '\n';
 }
 

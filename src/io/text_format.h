@@ -12,6 +12,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "subdiv/core/types.h"
+
 namespace subdiv::detail {
 
 inline void append_number(std::string& out, double value) {
@@ -27,6 +29,15 @@ inline void append_number(std::string& out, long long value) {
 }
 
 inline void append_number(std::string& out, int value) { append_number(out, static_cast<long long>(value)); }
+
+/// Appends "x y z", each coordinate as append_number() writes it.
+inline void append_point(std::string& out, Vec3 p) {
+  append_number(out, p.x);
+  out += ' ';
+  append_number(out, p.y);
+  out += ' ';
+  append_number(out, p.z);
+}
 
 /// Appends the lines of elements [0, count) to `out`, `append_line(text, i)`
 /// writing element i's. Blocks of elements are formatted on up to `threads`
