@@ -44,6 +44,7 @@ void BM_FastPath(benchmark::State& state, const char* name, bool quads, Variant 
   const PolygonMesh mesh = quads ? torus(158) : triangulated_torus(158);
   RefineOptions options;
   options.levels = static_cast<int>(state.range(0));
+  options.regular_grids = false;  // the kernels, not the grid path (bench_refine.cpp), take every face
   tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   Index faces = 0;
   for (auto _ : state) {

@@ -7,12 +7,12 @@
 
 #include "bench_meshes.h"
 #include "subdiv/refine/refine.h"
+#include "subdiv/rules/generalized_catmull_clark.h"
 
 namespace subdiv::bench {
 namespace {
 
-void refine_bench(benchmark::State& state, const PolygonMesh& mesh, const char* scheme_name, bool grids = true) {
-  const Scheme& scheme = *find_scheme(scheme_name);
+void refine_bench(benchmark::State& state, const PolygonMesh& mesh, const Scheme& scheme, bool grids = true) {
   RefineOptions options;
   options.regular_grids = grids;
   options.levels = static_cast<int>(state.range(1));
@@ -26,6 +26,10 @@ void refine_bench(benchmark::State& state, const PolygonMesh& mesh, const char* 
   }
   state.counters["faces_out"] = faces;
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * faces);
+}
+
+void refine_bench(benchmark::State& state, const PolygonMesh& mesh, const char* scheme_name, bool grids = true) {
+  refine_bench(state, mesh, *find_scheme(scheme_name), grids);
 }
 
 void BM_Refine_CatmullClark(benchmark::State& state) {
@@ -80,6 +84,26 @@ BENCHMARK_CAPTURE(BM_Refine_QuadScheme, four_eight, "four-eight")->Args({158, 6,
 // Kobbelt's interpolatory quad scheme (quad split, same output as
 // Catmull-Clark's) against Catmull-Clark and, per output face, Loop.
 BENCHMARK_CAPTURE(BM_Refine_QuadScheme, kobbelt, "kobbelt")->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The schemes whose regular rule is a wider tensor stencil (patch reach 2
+// or 3: Kobbelt's four-point rule, the B-splines of degree 5 and 7 of the
+// generalized Catmull-Clark and midpoint families) or a composite of steps
+// (degree 3), through the grid path and by the masks alone, one thread.
+void BM_Refine_WideStencil(benchmark::State& state, const char* name, int degree, bool grids) {
+  Scheme scheme = *find_scheme(name);
+  if (degree > 0) set_degree(scheme, degree);
+  refine_bench(state, torus(static_cast<int>(state.range(0))), scheme, grids);
+}
+#define SUBDIV_WIDE_STENCIL_BENCH(id, name, degree)                                                        \
+  BENCHMARK_CAPTURE(BM_Refine_WideStencil, id##_grids, name, degree, true)                                  \
+      ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();                                    \
+  BENCHMARK_CAPTURE(BM_Refine_WideStencil, id##_masks, name, degree, false)                                 \
+      ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime()
+SUBDIV_WIDE_STENCIL_BENCH(kobbelt, "kobbelt", 0);
+SUBDIV_WIDE_STENCIL_BENCH(gcc, "gcc", 0);
+SUBDIV_WIDE_STENCIL_BENCH(gcc_5, "gcc", 5);
+SUBDIV_WIDE_STENCIL_BENCH(midpoint_5, "midpoint", 5);
+SUBDIV_WIDE_STENCIL_BENCH(midpoint_7, "midpoint", 7);
 
 // Stencil path: build the table once (coarse -> level 2; arguments: mesh
 // size, levels, threads), then re-apply it to new positions, as for animation.

@@ -89,7 +89,8 @@ bool covers_level(const PolygonMesh& level, const MeshTopology& t, const RefineO
   return true;
 }
 
-std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology& t, const std::vector<char>& regular) {
+std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology& t, const std::vector<char>& regular,
+                                    int rings, bool close_pinches) {
   const Index nf = t.face_count();
   std::vector<char> near(static_cast<std::size_t>(t.vertex_count()));
   for (Index f = 0; f < nf; ++f)
@@ -100,12 +101,29 @@ std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology
     return std::any_of(vertices.begin(), vertices.end(), [&](Index v) { return near[static_cast<std::size_t>(v)] != 0; });
   };
   const Tags& tags = level.tags;
-  if (!tags.creases.empty() || !tags.corners.empty() || !tags.holes.empty()) {
-    std::vector<char> ring(static_cast<std::size_t>(nf));
+  const bool tagged = !tags.creases.empty() || !tags.corners.empty() || !tags.holes.empty();
+  std::vector<char> ring(static_cast<std::size_t>(nf));
+  for (int r = 1; r < rings + (tagged ? 1 : 0); ++r) {
     for (Index f = 0; f < nf; ++f) ring[static_cast<std::size_t>(f)] = touches(f);
     for (Index f = 0; f < nf; ++f)
       if (ring[static_cast<std::size_t>(f)])
         for (const Index v : t.face_vertices(f)) near[static_cast<std::size_t>(v)] = 1;
+  }
+  // Where asked, every vertex whose taken faces form several fans takes all
+  // of its faces, until none does: the mesh then does not pinch.
+  for (bool grew = close_pinches; grew;) {
+    grew = false;
+    for (Index f = 0; f < nf; ++f) ring[static_cast<std::size_t>(f)] = touches(f);
+    for (Index v = 0; v < t.vertex_count(); ++v) {
+      if (near[static_cast<std::size_t>(v)]) continue;  // all of its faces are taken
+      const auto corners = t.vertex_corners(v);
+      const auto n = corners.size();
+      auto taken = [&](std::size_t i) { return ring[static_cast<std::size_t>(t.corner_face(corners[i % n]))] != 0; };
+      std::size_t fans = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        fans += taken(i) && (i == 0 ? t.vertex_kind(v) != VertexKind::interior || !taken(n - 1) : !taken(i - 1));
+      if (fans > 1 || (fans > 0 && !t.ring_ordered(v))) near[static_cast<std::size_t>(v)] = 1, grew = true;
+    }
   }
   MasksMesh local;
   local.face_in_mesh.assign(static_cast<std::size_t>(nf), kInvalidIndex);

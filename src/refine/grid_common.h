@@ -46,12 +46,15 @@ std::vector<char> sharp_vertices(const PolygonMesh& level, const MeshTopology& t
 bool covers_level(const PolygonMesh& level, const MeshTopology& t, const RefineOptions& options, int levels,
                   Index face_size);
 
-// The faces that are not regular patches and those sharing a vertex with
-// them, as a mesh of their own for the masks (its artificial boundary
-// changes only points outside the faces taken from it), with the number
-// each face has there (kInvalidIndex for faces not in it). Where the level
-// has tags, a second ring: the sharpness and rules of the first ring's edges
-// and vertices then see all their neighbours.
+// The faces that are not regular patches and `rings` rings of faces around
+// them (a ring: the faces sharing a vertex with those before), as a mesh of
+// their own for the masks (its artificial boundary changes only points
+// outside the faces taken from it), with the number each face has there
+// (kInvalidIndex for faces not in it). Where the level has tags, one ring
+// more: the sharpness and rules of the last ring's edges and vertices then
+// see all their neighbours. With `close_pinches` (for schemes that refine
+// manifold meshes only), a vertex whose taken faces form several fans takes
+// all of its faces, so that the mesh does not pinch at its rim.
 struct MasksMesh {
   PolygonMesh mesh;
   std::vector<Index> face_in_mesh;
@@ -59,7 +62,8 @@ struct MasksMesh {
 };
 
 // nullopt where it would hold more than half the faces.
-std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology& t, const std::vector<char>& regular);
+std::optional<MasksMesh> masks_mesh(const PolygonMesh& level, const MeshTopology& t, const std::vector<char>& regular,
+                                    int rings = 1, bool close_pinches = false);
 
 // The options refining the masks' mesh: `levels` levels by the masks alone.
 RefineOptions masks_options(const RefineOptions& options, int levels);

@@ -4,48 +4,91 @@
 #include "grid_patch.h"
 
 #include <algorithm>
-#include <utility>
 
 namespace subdiv::detail {
 
-bool gather_patch(const MeshTopology& t, Index f, std::array<Index, 16>& patch) {
-  static constexpr int kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  patch.fill(kInvalidIndex);
-  const Index first = t.face_first_corner(f);
-  for (int c = 0; c < 4; ++c) {
-    const Index v = t.corner_vertex(first + c);
-    if (t.vertex_kind(v) != VertexKind::interior || t.valence(v) != 4 || t.vertex_face_count(v) != 4) return false;
-    // The frame of the corner: x towards the next corner, y towards the previous.
-    int x[2] = {kCorner[(c + 1) % 4][0] - kCorner[c][0], kCorner[(c + 1) % 4][1] - kCorner[c][1]};
-    int y[2] = {kCorner[(c + 3) % 4][0] - kCorner[c][0], kCorner[(c + 3) % 4][1] - kCorner[c][1]};
-    Index corner = first + c;
-    for (int turn = 0; turn < 4; ++turn) {
-      if (t.face_size(t.corner_face(corner)) != 4) return false;
-      const Index next = t.corner_next(corner), prev = t.corner_prev(corner);
-      const std::pair<Index, std::array<int, 2>> points[3] = {
-          {t.corner_vertex(next), {1, 0}}, {t.corner_vertex(t.corner_next(next)), {1, 1}}, {t.corner_vertex(prev), {0, 1}}};
-      for (const auto& [vertex, along] : points) {
-        const int px = kCorner[c][0] + along[0] * x[0] + along[1] * y[0];
-        const int py = kCorner[c][1] + along[0] * x[1] + along[1] * y[1];
-        Index& slot = patch[static_cast<std::size_t>((py + 1) * 4 + px + 1)];
-        if (slot != kInvalidIndex && slot != vertex) return false;
-        slot = vertex;
-      }
-      // The next face around v, across the edge towards `prev`; its frame
-      // is this one turned a quarter.
-      corner = t.corner_across(prev);
-      if (corner == kInvalidIndex || t.corner_vertex(corner) != v) return false;
-      std::swap(x, y);
-      y[0] = -y[0];
-      y[1] = -y[1];
-    }
-    if (corner != first + c) return false;
-  }
-  std::array<Index, 16> sorted = patch;
-  std::sort(sorted.begin(), sorted.end());
-  return sorted.front() != kInvalidIndex && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+namespace {
+
+// A quad placed on the patch's grid: its corner `origin` at (x, y), the
+// next corners counter-clockwise at (x + 1, y), (x + 1, y + 1), (x, y + 1).
+struct PlacedQuad {
+  Index origin;  // a corner of the topology
+  int x, y;
+};
+
+// The quad across one side of `q`, placed; nullopt at a boundary or where
+// the neighbour is not a quad. On a consistently oriented mesh the corner
+// across a side runs it the other way, which fixes the neighbour's frame.
+std::optional<PlacedQuad> step(const MeshTopology& t, const PlacedQuad& q, int dx, int dy) {
+  const Index c0 = q.origin, c1 = t.corner_next(c0), c2 = t.corner_next(c1), c3 = t.corner_next(c2);
+  // The side crossed: +x is c1's edge, +y c2's, -x c3's, -y c0's.
+  const Index side = dx > 0 ? c1 : dy > 0 ? c2 : dx < 0 ? c3 : c0;
+  const Index d = t.corner_across(side);
+  if (d == kInvalidIndex || t.face_size(t.corner_face(d)) != 4 || t.corner_vertex(d) != t.corner_vertex(t.corner_next(side)))
+    return std::nullopt;
+  // d sits at the crossed side's far end, seen from q; the neighbour's
+  // origin is the corner that lands on its own (0, 0).
+  const Index origin = dx > 0 ? t.corner_next(d) : dy > 0 ? d : dx < 0 ? t.corner_prev(d) : t.corner_next(t.corner_next(d));
+  return PlacedQuad{origin, q.x + dx, q.y + dy};
 }
 
+bool regular_vertex(const MeshTopology& t, Index v, const std::vector<char>& sharp) {
+  return t.vertex_kind(v) == VertexKind::interior && t.valence(v) == 4 && t.vertex_face_count(v) == 4 &&
+         sharp[static_cast<std::size_t>(v)] == 0;
+}
+
+}  // namespace
+
+bool gather_patch(const MeshTopology& t, Index f, int reach, const std::vector<char>& sharp, std::span<Index> patch) {
+  const int side = patch_side(reach);
+  std::fill(patch.begin(), patch.end(), kInvalidIndex);
+  auto place = [&](const PlacedQuad& q) {
+    Index c = q.origin;
+    static constexpr int kAt[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (const auto& at : kAt) {
+      const Index v = t.corner_vertex(c);
+      Index& slot = patch[static_cast<std::size_t>((q.y + at[1] + reach) * side + q.x + at[0] + reach)];
+      if (slot != kInvalidIndex && slot != v) return false;
+      slot = v;
+      c = t.corner_next(c);
+    }
+    return true;
+  };
+  if (t.face_size(f) != 4) return false;
+  // Up and down the column of faces through f, then along each row.
+  const PlacedQuad root{t.face_first_corner(f), 0, 0};
+  for (const int dy : {1, -1}) {
+    std::optional<PlacedQuad> column = root;
+    for (int y = 0; column && y <= reach; ++y) {
+      if (y > 0 && !(column = step(t, *column, 0, dy))) return false;
+      for (const int dx : {1, -1}) {
+        std::optional<PlacedQuad> q = column;
+        for (int x = 0; x <= reach; ++x) {
+          if (x > 0 && !(q = step(t, *q, dx, 0))) return false;
+          if (!place(*q)) return false;
+        }
+      }
+    }
+  }
+  std::array<Index, kMaxPatchPoints> sorted{};
+  const auto points = static_cast<std::size_t>(side * side);
+  std::copy(patch.begin(), patch.begin() + static_cast<std::ptrdiff_t>(points), sorted.begin());
+  std::sort(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(points));
+  if (sorted.front() == kInvalidIndex ||
+      std::adjacent_find(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(points)) !=
+          sorted.begin() + static_cast<std::ptrdiff_t>(points))
+    return false;
+  // Reach 1 (Catmull-Clark's rules): the corners' rings are all the rules
+  // read. Wider stencils read their neighbours' lines too: every point.
+  if (reach == 1) {
+    for (const int at : {side + 1, side + 2, 2 * side + 2, 2 * side + 1})
+      if (!regular_vertex(t, patch[static_cast<std::size_t>(at)], sharp)) return false;
+    return true;
+  }
+  for (std::size_t i = 0; i < points; ++i)
+    if (!regular_vertex(t, patch[i], sharp)) return false;
+  return true;
+}
 
 Ownership ownership_of(const MeshTopology& t, Index f, int n) {
   Ownership o;
@@ -58,23 +101,26 @@ Ownership ownership_of(const MeshTopology& t, Index f, int n) {
   return o;
 }
 
-std::vector<std::array<double, 4>> line_weights(const RegularGrid& rule, int levels) {
-  const int n = 1 << levels;
-  std::vector<std::array<double, 4>> weights(static_cast<std::size_t>(n + 1));
+std::vector<double> line_weights(const RegularGrid& rule, int levels) {
+  const int n = 1 << levels, reach = rule.patch_reach(), side = patch_side(reach);
+  std::vector<double> weights(static_cast<std::size_t>((n + 1) * side));
   // Refine each control point's unit impulse along the line, as refine_line
   // refines values (one double per point).
   std::vector<double> line, finer;
-  for (int i = 0; i < 4; ++i) {
-    line.assign(4, 0.0);
+  for (int i = 0; i < side; ++i) {
+    line.assign(static_cast<std::size_t>(side), 0.0);
     line[static_cast<std::size_t>(i)] = 1.0;
-    int m = 4;
+    int m = side;
     for (int l = 0; l < levels; ++l) {
-      finer.resize(static_cast<std::size_t>(2 * m - 3));
-      refine_line<1>(rule, line.data(), 1, m, finer.data(), 1, 1);
+      finer.resize(static_cast<std::size_t>(2 * m - 2 * reach - 1));
+      if (reach == 1) refine_line<1, 1>(rule, line.data(), 1, m, finer.data(), 1, 1);
+      else if (reach == 2) refine_line<1, 2>(rule, line.data(), 1, m, finer.data(), 1, 1);
+      else refine_line<1, 3>(rule, line.data(), 1, m, finer.data(), 1, 1);
       line.swap(finer);
-      m = 2 * m - 3;
+      m = 2 * m - 2 * reach - 1;
     }
-    for (int x = 0; x <= n; ++x) weights[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] = line[static_cast<std::size_t>(x + 1)];
+    for (int x = 0; x <= n; ++x)
+      weights[static_cast<std::size_t>(x * side + i)] = line[static_cast<std::size_t>(x + reach)];
   }
   return weights;
 }

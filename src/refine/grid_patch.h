@@ -1,10 +1,13 @@
 #pragma once
-// A regular face's patch for the grid path (grid_refine.h): its 4 x 4
-// control points, its share of the points it shares with its neighbours,
-// and the scheme's tensor stencil (RegularGrid) applied to its grid.
+// A regular face's patch for the grid path (grid_refine.h): its control
+// points (4 x 4 for Catmull-Clark, up to 8 x 8), its share of the points it
+// shares with its neighbours, and the scheme's tensor stencil (RegularGrid)
+// applied to its grid.
 
 #include <array>
 #include <cstddef>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "subdiv/core/types.h"
@@ -14,11 +17,20 @@
 
 namespace subdiv::detail {
 
-// The 16 control points of face f's bicubic patch, row-major from (-1, -1)
-// to (2, 2) in the face's frame (corners at (0, 0), (1, 0), (1, 1), (0, 1));
-// false unless every corner is an interior vertex with four quads around it
-// and the 16 points are distinct.
-bool gather_patch(const MeshTopology& t, Index f, std::array<Index, 16>& patch);
+// The largest patch reach (RegularGrid::patch_reach()) and its control points.
+constexpr int kMaxPatchReach = 3;
+constexpr int kMaxPatchPoints = (2 * kMaxPatchReach + 2) * (2 * kMaxPatchReach + 2);
+
+// Control points per side of a patch of reach r: from -r to r + 1.
+constexpr int patch_side(int reach) { return 2 * reach + 2; }
+
+// The (2r + 2)^2 control points of face f's patch of reach r, row-major
+// from (-r, -r) to (r + 1, r + 1) in the face's frame (corners at (0, 0),
+// (1, 0), (1, 1), (0, 1)), walked face by face across the quads around f;
+// false unless the walk finds quads with consistent corners and distinct
+// points, and the points the rule reads are regular: at reach 1 the corners
+// (interior, four quads around), beyond it every point, none sharp.
+bool gather_patch(const MeshTopology& t, Index f, int reach, const std::vector<char>& sharp, std::span<Index> patch);
 
 // Face f's share of the shared points: a corner vertex belongs to the face
 // of its first corner, an edge's inner points to the face of its first side.
@@ -36,29 +48,48 @@ struct Ownership {
 
 Ownership ownership_of(const MeshTopology& t, Index f, int n);
 
-/// weights[x][i]: the weight of control point i (at -1, 0, 1, 2 along a
-/// line) in the point at x = 0 .. n of a patch refined `levels` times along
-/// the line (n = 2^levels): the line's rows of the patch's stencils.
-std::vector<std::array<double, 4>> line_weights(const RegularGrid& rule, int levels);
+/// weights[x * side + i]: the weight of control point i (at -r .. r + 1
+/// along a line, side = 2r + 2 of them) in the point at x = 0 .. n of a
+/// patch refined `levels` times along the line (n = 2^levels): the line's
+/// rows of the patch's stencils.
+std::vector<double> line_weights(const RegularGrid& rule, int levels);
 
 // One step of the tensor stencil along a line of m points (`in_stride`
-// points apart), making 2m - 3 points (`out_stride` apart): the line's points
-// from -1 to n + 1 become those from -1 to 2n + 1. A point is `width`
-// doubles (kWidth where known at compile time, 0 otherwise).
-template <int kWidth>
+// points apart), the line's points from -r to n + r for reach r = kReach,
+// making those from -r to 2n + r: 2m - 2r - 1 points (`out_stride` apart).
+// A point is `width` doubles (kWidth where known at compile time, 0
+// otherwise). Reach 1 reads one point each side (the even rule's middle
+// three weights, the odd rule's middle two), reach 2 reads the odd rule's
+// four, reach 3 every weight.
+template <int kWidth, int kReach>
 void refine_line(const RegularGrid& rule, const double* in, std::ptrdiff_t in_stride, int m, double* out,
                  std::ptrdiff_t out_stride, int width) {
+  constexpr int kEven = kReach == 3 ? 2 : 1;  // even points read i - kEven .. i + kEven
+  constexpr int kOdd = kReach == 1 ? 1 : 2;   // odd points read i - kOdd + 1 .. i + kOdd
   const std::ptrdiff_t w = kWidth > 0 ? kWidth : width;
   const std::ptrdiff_t is = in_stride * w, os = out_stride * w;
-  const int fine = 2 * m - 3;
+  const int fine = 2 * m - 2 * kReach - 1;
   for (int t = 0; t < fine; ++t) {
-    const double* a = in + (t / 2) * is;
+    // Fine point t is at position t - r; coarse point j at j - r.
+    const int p = t - kReach;
     double* o = out + t * os;
-    if (t % 2 == 0) {
-      for (std::ptrdiff_t j = 0; j < w; ++j) o[j] = rule.odd[0] * a[j] + rule.odd[1] * a[is + j];
+    if (p % 2 == 0) {
+      const double* a = in + (p / 2 + kReach - kEven) * is;
+      const double* k = rule.even.data() + 2 - kEven;
+      for (std::ptrdiff_t j = 0; j < w; ++j) {
+        double sum = k[0] * a[j];
+        for (int q = 1; q <= 2 * kEven; ++q) sum += k[q] * a[q * is + j];
+        o[j] = sum;
+      }
     } else {
-      for (std::ptrdiff_t j = 0; j < w; ++j)
-        o[j] = rule.even[0] * a[j] + rule.even[1] * a[is + j] + rule.even[2] * a[2 * is + j];
+      const int i = (p - 1) / 2;  // exact: p - 1 is even
+      const double* a = in + (i + kReach - kOdd + 1) * is;
+      const double* k = rule.odd.data() + 2 - kOdd;
+      for (std::ptrdiff_t j = 0; j < w; ++j) {
+        double sum = k[0] * a[j];
+        for (int q = 1; q < 2 * kOdd; ++q) sum += k[q] * a[q * is + j];
+        o[j] = sum;
+      }
     }
   }
 }
@@ -69,29 +100,35 @@ struct Scratch {
   std::vector<Index> index;        // the final vertex number of each grid point
   std::vector<Index> local_index;  // faces of the masks' mesh: the point's number in its refinement
 
-  void size_for(int n, int width) {
-    const auto side = static_cast<std::size_t>(n + 3);
+  void size_for(int n, int width, int reach = 1) {
+    const auto side = static_cast<std::size_t>(n + 2 * reach + 1);
     const std::size_t doubles = side * side * static_cast<std::size_t>(width);
-    if (grid.size() >= doubles) return;
-    grid.resize(doubles);
-    rows.resize(doubles);
-    refined.resize(doubles);
-    index.resize(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1));
-    local_index.resize(index.size());
+    if (grid.size() < doubles) {
+      grid.resize(doubles);
+      rows.resize(doubles);
+      refined.resize(doubles);
+    }
+    const std::size_t points = static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1);
+    if (index.size() < points) {
+      index.resize(points);
+      local_index.resize(points);
+    }
   }
 };
 
-// Refines the 4 x 4 control values in scratch.grid `levels` times: the
-// (n + 3)^2 grid of the patch's points from -1 to n + 1, in scratch.grid.
-template <int kWidth>
+// Refines the (2r + 2)^2 control values in scratch.grid `levels` times, r =
+// kReach: the (n + 2r + 1)^2 grid of the patch's points from -r to n + r, in
+// scratch.grid.
+template <int kWidth, int kReach>
 void refine_patch(const RegularGrid& rule, int levels, int width, Scratch& s) {
-  int m = 4;
+  int m = patch_side(kReach);
   for (int l = 0; l < levels; ++l) {
-    const int fine = 2 * m - 3;
+    const int fine = 2 * m - 2 * kReach - 1;
     for (int r = 0; r < m; ++r)
-      refine_line<kWidth>(rule, s.grid.data() + r * m * width, 1, m, s.rows.data() + r * fine * width, 1, width);
+      refine_line<kWidth, kReach>(rule, s.grid.data() + r * m * width, 1, m, s.rows.data() + r * fine * width, 1, width);
     for (int col = 0; col < fine; ++col)
-      refine_line<kWidth>(rule, s.rows.data() + col * width, fine, m, s.refined.data() + col * width, fine, width);
+      refine_line<kWidth, kReach>(rule, s.rows.data() + col * width, fine, m, s.refined.data() + col * width, fine,
+                                  width);
     s.grid.swap(s.refined);
     m = fine;
   }

@@ -125,27 +125,32 @@ void split_face_varying(const FaceVaryingLevels& levels, Index face, const std::
 // counts, which faces are regular, and the masks' mesh of the others.
 struct GridPlan {
   const MeshTopology& topology;
+  RegularGrid rule;
+  int reach = 1;                    // the patch's points beyond the face on each side
+  int side = 4;                     // control points per patch side: 2 reach + 2
   int levels = 0;
   int n = 0;                        // grid intervals per face side: 2^levels
   Index per_face = 0;               // final faces per face: 4^levels
   std::vector<LevelCounts> counts = {};  // of the levels before the last
   LevelCounts last = {};
   std::vector<char> regular = {};
-  std::vector<Index> patches = {};  // 16 control points per face, those of regular faces set
+  std::vector<Index> patches = {};  // side^2 control points per face, those of regular faces set
   MasksMesh local = {};
   RefineOptions by_masks = {};  // for the masks' mesh
 
-  const Index* patch(Index f) const { return patches.data() + 16 * static_cast<std::size_t>(f); }
+  std::size_t patch_size() const { return static_cast<std::size_t>(side * side); }
+  const Index* patch(Index f) const { return patches.data() + patch_size() * static_cast<std::size_t>(f); }
 };
 
 std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                    const RefineOptions& options, int levels) {
-  if (!scheme.fast_path.regular_grid || scheme.split != SplitRule::quad || scheme.steps ||
-      !covers_level(level, t, options, levels, 4))
-    return std::nullopt;
+  const std::optional<RegularGrid> rule = regular_grid_of(scheme);
+  if (!rule || scheme.split != SplitRule::quad || !covers_level(level, t, options, levels, 4)) return std::nullopt;
   const Index nf = t.face_count();
   if (nf == 0) return std::nullopt;  // nothing to plan; the masks return the empty mesh
-  GridPlan plan{.topology = t, .levels = levels, .n = 1 << levels};
+  const int reach = rule->patch_reach();
+  GridPlan plan{.topology = t, .rule = *rule, .reach = reach, .side = patch_side(reach), .levels = levels,
+                .n = 1 << levels};
   plan.counts.push_back({nf, t.edge_count(), t.vertex_count()});
   for (int l = 0; l < levels; ++l) plan.counts.push_back(plan.counts.back().child());
   plan.last = plan.counts.back();
@@ -155,25 +160,35 @@ std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology&
   if (4 * plan.last.faces > kMax || plan.last.vertices > kMax) return std::nullopt;
   plan.per_face = static_cast<Index>(plan.last.faces / nf);
 
-  // Regular: a bicubic patch with no sharp corner.
+  // Regular: a patch of the stencil's reach with no sharp point where the rules read.
   const std::vector<char> sharp = sharp_vertices(level, t);
   plan.regular.resize(static_cast<std::size_t>(nf));
-  assign_large(plan.patches, 16 * static_cast<std::size_t>(nf));
+  assign_large(plan.patches, plan.patch_size() * static_cast<std::size_t>(nf));
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::array<Index, 16> patch;
+    std::array<Index, kMaxPatchPoints> patch;
+    const std::span<Index> points(patch.data(), plan.patch_size());
     for (Index f = range.begin(); f != range.end(); ++f) {
-      const auto corners = t.face_vertices(f);
-      const bool regular =
-          gather_patch(t, f, patch) &&
-          std::none_of(corners.begin(), corners.end(), [&](Index v) { return sharp[static_cast<std::size_t>(v)] != 0; });
+      const bool regular = gather_patch(t, f, reach, sharp, points);
       plan.regular[static_cast<std::size_t>(f)] = regular;
-      if (regular) std::copy(patch.begin(), patch.end(), plan.patches.begin() + 16 * static_cast<std::ptrdiff_t>(f));
+      if (regular)
+        std::copy(points.begin(), points.end(),
+                  plan.patches.begin() + static_cast<std::ptrdiff_t>(plan.patch_size() * static_cast<std::size_t>(f)));
     }
   });
-  std::optional<MasksMesh> local = masks_mesh(level, t, plan.regular);
+  // The masks' mesh keeps its artificial boundary beyond what the faces'
+  // points read. Catmull-Clark's read the faces around their corners (one
+  // ring); a composite scheme's, one ring per smoothing step (its reach);
+  // Kobbelt's face points read new edge points on lines one face further
+  // out, whose rules see those lines' vertices (reach 2, three rings; with
+  // two, the open grid of tests/refine/grid_wide_stencil_test.cpp differs).
+  // Composite schemes refine manifold meshes only: their masks' mesh must
+  // not pinch.
+  const bool manifold = scheme.steps != nullptr;
+  std::optional<MasksMesh> local = masks_mesh(level, t, plan.regular, reach == 1 ? 1 : reach + 1, manifold);
   if (!local) return std::nullopt;  // mostly irregular: the masks first
   plan.local = std::move(*local);
   plan.by_masks = masks_options(options, levels);
+  if (manifold) plan.by_masks.allow_non_manifold = false;
   return plan;
 }
 
@@ -233,13 +248,18 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
     std::copy(in.values.begin(), in.values.end(), channel.values.begin());
     assign_large(channel.indices, 4 * static_cast<std::size_t>(plan->last.faces));
   }
-  const RegularGrid& rule = *scheme.fast_path.regular_grid;
+  const RegularGrid& rule = plan->rule;
   const PointValues values(level);
-  const int width = values.width, n = plan->n, side = n + 3;
+  const int width = values.width, n = plan->n, reach = plan->reach, side = n + 2 * reach + 1;
+  auto refine_grid = [&](Scratch& s) {
+    if (reach == 1) width == 3 ? refine_patch<3, 1>(rule, levels, width, s) : refine_patch<0, 1>(rule, levels, width, s);
+    else if (reach == 2) width == 3 ? refine_patch<3, 2>(rule, levels, width, s) : refine_patch<0, 2>(rule, levels, width, s);
+    else width == 3 ? refine_patch<3, 3>(rule, levels, width, s) : refine_patch<0, 3>(rule, levels, width, s);
+  };
   tbb::enumerable_thread_specific<Scratch> scratch;
   tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
     Scratch& s = scratch.local();
-    s.size_for(n, width);
+    s.size_for(n, width, reach);
     for (Index f = range.begin(); f != range.end(); ++f) {
       walk_face(*plan, f, local_refined.face_indices, s, [&](const SubFace& sub) {
         const auto at = static_cast<std::size_t>(sub.face) * 4;
@@ -258,11 +278,11 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
         continue;
       }
       const Index* patch = plan->patch(f);
-      for (std::size_t i = 0; i < 16; ++i) values.gather(patch[i], s.grid.data() + i * static_cast<std::size_t>(width));
-      if (width == 3) refine_patch<3>(rule, levels, width, s);
-      else refine_patch<0>(rule, levels, width, s);
+      for (std::size_t i = 0; i < plan->patch_size(); ++i)
+        values.gather(patch[i], s.grid.data() + i * static_cast<std::size_t>(width));
+      refine_grid(s);
       for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
-        scatter(s.grid.data() + static_cast<std::size_t>(((y + 1) * side + x + 1) * width), s.index[at], out);
+        scatter(s.grid.data() + static_cast<std::size_t>(((y + reach) * side + x + reach) * width), s.index[at], out);
       });
     }
   });
@@ -284,14 +304,17 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
     local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
     local_table = refine_stencil_table(plan->local.mesh, scheme, plan->by_masks);
   }
-  // A regular point's row: fn(control point 4j + i, weight) for each nonzero
-  // product of the line weights.
-  const std::vector<std::array<double, 4>> weights = line_weights(*scheme.fast_path.regular_grid, levels);
+  // A regular point's row: fn(control point side j + i, weight) for each
+  // nonzero product of the line weights.
+  const std::vector<double> weights = line_weights(plan->rule, levels);
+  const auto side = static_cast<std::size_t>(plan->side);
   auto for_each_regular_entry = [&](int x, int y, auto&& fn) {
-    for (std::size_t j = 0; j < 4; ++j)
-      for (std::size_t i = 0; i < 4; ++i) {
-        const double w = weights[static_cast<std::size_t>(x)][i] * weights[static_cast<std::size_t>(y)][j];
-        if (w != 0.0) fn(4 * j + i, w);
+    const double* wx = weights.data() + static_cast<std::size_t>(x) * side;
+    const double* wy = weights.data() + static_cast<std::size_t>(y) * side;
+    for (std::size_t j = 0; j < side; ++j)
+      for (std::size_t i = 0; i < side; ++i) {
+        const double w = wx[i] * wy[j];
+        if (w != 0.0) fn(side * j + i, w);
       }
   };
 
@@ -329,7 +352,7 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
   for_each_face([&](Index f, const Scratch& s) {
     const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
     const Index* patch = plan->patch(f);
-    std::array<std::pair<Index, double>, 16> entries;
+    std::array<std::pair<Index, double>, kMaxPatchPoints> entries;
     for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
       std::size_t count = 0;
       if (grid) for_each_regular_entry(x, y, [&](std::size_t k, double w) { entries[count++] = {patch[k], w}; });

@@ -14,7 +14,7 @@ void edge_point(const LevelView& level, Index e, EdgeRule, MaskBuilder& mask) { 
 void vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
 
 // Along a grid line: old points kept, new ones at midpoints.
-constexpr RegularGrid kRegularGrid{.even = {0.0, 1.0, 0.0}, .odd = {0.5, 0.5}};
+constexpr RegularGrid kRegularGrid{.even = {0.0, 0.0, 1.0, 0.0, 0.0}, .odd = {0.0, 0.5, 0.5, 0.0}};
 
 }  // namespace
 

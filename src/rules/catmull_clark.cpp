@@ -158,7 +158,7 @@ bool limit_masks(const VertexNeighbourhood& n, LimitMasks& m) {
 // On regular quads the rules above are the uniform cubic B-spline's
 // refinement along each grid line: 1/8, 3/4, 1/8 at old points, 1/2, 1/2 at
 // new ones (Lane and Riesenfeld 1980).
-constexpr RegularGrid kRegularGrid{.even = {0.125, 0.75, 0.125}, .odd = {0.5, 0.5}};
+constexpr RegularGrid kRegularGrid{.even = {0.0, 0.125, 0.75, 0.125, 0.0}, .odd = {0.0, 0.5, 0.5, 0.0}};
 
 }  // namespace
 

@@ -158,6 +158,33 @@ void check_midpoint(std::string_view name, const SchemeParameters& parameters) {
                            "weights to " + std::string(generalized_catmull_clark_scheme().name));
 }
 
+// On a regular grid a level of odd degree n = 2r + 1 is R, the bilinear
+// split, then r smoothing steps. Where every step's weights at valence 4
+// are alpha = 1/4, beta = 1/2 (midpoint's, and Catmull-Clark's at m = 4),
+// B there is the tensor product of (1/4, 1/2, 1/4), so the level is that of
+// the uniform B-spline of degree n along each grid line: the mask
+// (1/2, 1, 1/2) of R convolved r times with (1/4, 1/2, 1/4), whose even and
+// odd taps are RegularGrid's weights while they fit it (n = 3, 5, 7).
+std::optional<RegularGrid> regular_grid(const SchemeParameters& parameters) {
+  const DegreeParameters* degree = degree_parameters(parameters);
+  if (!degree || degree->degree % 2 == 0 || degree->degree > 7) return std::nullopt;
+  for (const SmoothingWeights& w : degree->smoothing)
+    if (w.at(4) != std::pair{0.25, 0.5}) return std::nullopt;
+  std::vector<double> mask{0.5, 1.0, 0.5};  // centred: mask[h + k] at fine offset k
+  for (int step = 0; step < (degree->degree - 1) / 2; ++step) {
+    std::vector<double> wider(mask.size() + 2, 0.0);
+    for (std::size_t k = 0; k < mask.size(); ++k)
+      for (std::size_t q = 0; q < 3; ++q) wider[k + q] += mask[k] * (q == 1 ? 0.5 : 0.25);
+    mask.swap(wider);
+  }
+  const int h = static_cast<int>(mask.size() / 2);
+  auto tap = [&](int offset) { return std::abs(offset) <= h ? mask[static_cast<std::size_t>(h + offset)] : 0.0; };
+  RegularGrid rule{};
+  for (int d = -2; d <= 2; ++d) rule.even[static_cast<std::size_t>(d + 2)] = tap(-2 * d);  // coarse i + d of fine 2i
+  for (int d = -1; d <= 2; ++d) rule.odd[static_cast<std::size_t>(d + 1)] = tap(1 - 2 * d);  // of fine 2i + 1
+  return rule;
+}
+
 Scheme composite(std::string_view name, std::string_view summary, std::string_view citation, SmoothingWeights weights,
                  ParameterCheck check) {
   return Scheme{.name = name,
@@ -166,6 +193,7 @@ Scheme composite(std::string_view name, std::string_view summary, std::string_vi
                 .split = SplitRule::quad,
                 .traits = {.analysis_rings = analysis_rings_of_degree(3)},
                 .steps = steps_of,
+                .fast_path = {.regular_grid_of = regular_grid},
                 .parameters = DegreeParameters{.degree = 3, .smoothing = {std::move(weights)}},
                 .parameter_check = check};
 }

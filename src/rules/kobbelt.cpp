@@ -319,6 +319,14 @@ void check_tension(std::string_view name, const SchemeParameters& parameters) {
                                      name, w));
 }
 
+// On a regular grid the scheme is the tensor product of the four-point
+// rule: old points stay, a new point on a line is (1/2 + w) on its two
+// neighbours and -w on the two beyond them.
+std::optional<RegularGrid> regular_grid(const SchemeParameters& parameters) {
+  const double w = std::get<TensionParameters>(parameters).tension;
+  return RegularGrid{.even = {0.0, 0.0, 1.0, 0.0, 0.0}, .odd = {-w, 0.5 + w, 0.5 + w, -w}};
+}
+
 }  // namespace
 
 const Scheme& kobbelt_scheme() noexcept {
@@ -334,7 +342,7 @@ const Scheme& kobbelt_scheme() noexcept {
                 .edge_point = edge_point,
                 .vertex_point = vertex_point,
                 .face_points_read_edge_points = true},
-      .fast_path = {.point = evaluate_point},
+      .fast_path = {.point = evaluate_point, .regular_grid_of = regular_grid},
       .parameters = TensionParameters{},
       .parameter_check = check_tension};
   return scheme;

@@ -42,8 +42,9 @@ TEST(GridRefine, DeclaredRuleIsTheMasksRegularStencil) {
   for (const Scheme* scheme : {&catmull_clark_scheme(), &bilinear_scheme()}) {
     SCOPED_TRACE(std::string(scheme->name));
     const RegularGrid& rule = *scheme->fast_path.regular_grid;
-    ASSERT_EQ(rule.even[0], rule.even[2]);  // symmetric, so the frame's direction does not matter
-    ASSERT_EQ(rule.odd[0], rule.odd[1]);
+    ASSERT_EQ(rule.patch_reach(), 1);  // the outer weights are 0: even[1..3], odd[1..2] below
+    ASSERT_EQ(rule.even[1], rule.even[3]);  // symmetric, so the frame's direction does not matter
+    ASSERT_EQ(rule.odd[1], rule.odd[2]);
     const StencilTable table = refine_stencil_table(mesh, *scheme, with_grids(false, 1));
     auto weight = [&](Index row, Index vertex) {
       const auto vs = table.row_vertices(row);
@@ -60,28 +61,28 @@ TEST(GridRefine, DeclaredRuleIsTheMasksRegularStencil) {
     };
     const Index nf = t.face_count(), ne = t.edge_count();
     for (Index f = 0; f < nf; ++f) {  // face point: odd x odd on the face's corners
-      for (const Index v : t.face_vertices(f)) EXPECT_DOUBLE_EQ(weight(f, v), rule.odd[0] * rule.odd[1]);
-      EXPECT_NEAR(row_sum(f), 4 * rule.odd[0] * rule.odd[1], 1e-15);
+      for (const Index v : t.face_vertices(f)) EXPECT_DOUBLE_EQ(weight(f, v), rule.odd[1] * rule.odd[2]);
+      EXPECT_NEAR(row_sum(f), 4 * rule.odd[1] * rule.odd[2], 1e-15);
     }
     for (Index e = 0; e < ne; ++e) {  // edge point: odd along the edge, even across it
       const auto [a, b] = t.edge_vertices(e);
-      EXPECT_DOUBLE_EQ(weight(nf + e, a), rule.odd[0] * rule.even[1]);
-      EXPECT_DOUBLE_EQ(weight(nf + e, b), rule.odd[1] * rule.even[1]);
-      double others = 0.0;  // the two quads' other corners, odd x even[0 or 2] each
+      EXPECT_DOUBLE_EQ(weight(nf + e, a), rule.odd[1] * rule.even[2]);
+      EXPECT_DOUBLE_EQ(weight(nf + e, b), rule.odd[2] * rule.even[2]);
+      double others = 0.0;  // the two quads' other corners, odd x even[1 or 3] each
       for (const Index c : t.edge_corners(e))
         for (const Index v : t.face_vertices(t.corner_face(c)))
           if (v != a && v != b) {
-            EXPECT_DOUBLE_EQ(weight(nf + e, v), rule.odd[0] * rule.even[0]);
+            EXPECT_DOUBLE_EQ(weight(nf + e, v), rule.odd[1] * rule.even[1]);
             others += weight(nf + e, v);
           }
       EXPECT_NEAR(row_sum(nf + e), weight(nf + e, a) + weight(nf + e, b) + others, 1e-15);
     }
     for (Index v = 0; v < t.vertex_count(); ++v) {  // vertex point: even x even
       const Index row = nf + ne + v;
-      EXPECT_DOUBLE_EQ(weight(row, v), rule.even[1] * rule.even[1]);
-      for (const Index e : t.vertex_edges(v)) EXPECT_DOUBLE_EQ(weight(row, t.other_vertex(e, v)), rule.even[0] * rule.even[1]);
+      EXPECT_DOUBLE_EQ(weight(row, v), rule.even[2] * rule.even[2]);
+      for (const Index e : t.vertex_edges(v)) EXPECT_DOUBLE_EQ(weight(row, t.other_vertex(e, v)), rule.even[1] * rule.even[2]);
       for (const Index c : t.vertex_corners(v))  // the diagonal: the corner opposite v
-        EXPECT_DOUBLE_EQ(weight(row, t.corner_vertex(t.corner_next(t.corner_next(c)))), rule.even[0] * rule.even[2]);
+        EXPECT_DOUBLE_EQ(weight(row, t.corner_vertex(t.corner_next(t.corner_next(c)))), rule.even[1] * rule.even[3]);
       EXPECT_NEAR(row_sum(row), 1.0, 1e-15);
     }
   }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <utility>
@@ -420,13 +421,28 @@ struct SchemeMasks {
 
 /// A quad-split scheme's rule on regular regions, as a tensor product: one
 /// step along a grid line makes the point at even position 2i from the coarse
-/// points i-1, i, i+1 with weights `even`, and the point at 2i+1 from i, i+1
-/// with `odd`; a surface point takes the product of its two directions'
-/// weights. Declared where the scheme's masks at interior vertices of valence
-/// 4 with no sharp edge are this product (a test derives it from them).
+/// points i-2 .. i+2 with weights `even`, and the point at 2i+1 from
+/// i-1 .. i+2 with `odd`; a surface point takes the product of its two
+/// directions' weights. Declared where the scheme's masks at interior
+/// vertices of valence 4 with no sharp edge are this product (a test derives
+/// it from them). Catmull-Clark's reads one point each side (even[0],
+/// even[4], odd[0] and odd[3] are 0); Kobbelt's four-point rule and the
+/// quintic B-spline read two for odd points, the septic B-spline two for
+/// both.
 struct RegularGrid {
-  std::array<double, 3> even;  ///< weights on coarse points i-1, i, i+1 of fine point 2i
-  std::array<double, 2> odd;   ///< weights on coarse points i, i+1 of fine point 2i+1
+  std::array<double, 5> even;  ///< weights on coarse points i-2 .. i+2 of fine point 2i
+  std::array<double, 4> odd;   ///< weights on coarse points i-1 .. i+2 of fine point 2i+1
+
+  /// How many coarse points beyond a face's two corners its patch takes on
+  /// each side of a grid line, 1 to 3: the fewest from which the stencil
+  /// makes the same reach of points again at the finer level (1: Catmull-
+  /// Clark's 4 x 4 patch; 2: 6 x 6 when odd points read two points each
+  /// side; 3: 8 x 8 when even points do too).
+  int patch_reach() const noexcept {
+    if (even[0] != 0.0 || even[4] != 0.0) return 3;
+    if (odd[0] != 0.0 || odd[3] != 0.0) return 2;
+    return 1;
+  }
 };
 
 /// A triangle-split scheme's rule on regular regions (interior vertices of
@@ -460,6 +476,10 @@ struct FastPath {
   /// refine_stencil_table() then refine the faces whose corners are regular
   /// as grids (src/refine/grid_refine.h). nullptr: none.
   const RegularGrid* regular_grid = nullptr;
+  /// The same for a family whose regular rule follows its parameters (a
+  /// tension, a degree): the rule for `parameters`, or nullopt where those
+  /// parameters make no tensor product. Used where regular_grid is nullptr.
+  std::optional<RegularGrid> (*regular_grid_of)(const SchemeParameters& parameters) = nullptr;
   /// The same for a triangle-split scheme (RegularTriangleGrid).
   const RegularTriangleGrid* regular_triangle_grid = nullptr;
 };
@@ -498,6 +518,16 @@ struct Scheme {
   /// The family's own parameter check (ParameterCheck); nullptr: none.
   ParameterCheck parameter_check = nullptr;
 };
+
+/// The scheme's regular rule as a grid stencil, for its parameters
+/// (FastPath::regular_grid, else FastPath::regular_grid_of).
+/// \param scheme the scheme, possibly a copy with changed parameters.
+/// \return the rule; nullopt where the scheme declares none for them.
+inline std::optional<RegularGrid> regular_grid_of(const Scheme& scheme) {
+  if (scheme.fast_path.regular_grid) return *scheme.fast_path.regular_grid;
+  if (scheme.fast_path.regular_grid_of) return scheme.fast_path.regular_grid_of(scheme.parameters);
+  return std::nullopt;
+}
 
 /// Whether the scheme's masks read a tension (the CLI's --tension).
 /// \param scheme the scheme.
