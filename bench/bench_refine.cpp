@@ -105,6 +105,21 @@ SUBDIV_WIDE_STENCIL_BENCH(gcc_5, "gcc", 5);
 SUBDIV_WIDE_STENCIL_BENCH(midpoint_5, "midpoint", 5);
 SUBDIV_WIDE_STENCIL_BENCH(midpoint_7, "midpoint", 7);
 
+// The Butterfly schemes' 8-point rule (triangle patches of reach 2)
+// through the grid path and by the masks alone, one thread, 50k triangles
+// to level 3.
+void BM_Refine_ButterflyGrid(benchmark::State& state, const char* name, bool grids) {
+  refine_bench(state, triangulated_torus(static_cast<int>(state.range(0))), name, grids);
+}
+BENCHMARK_CAPTURE(BM_Refine_ButterflyGrid, butterfly_grids, "butterfly", true)
+    ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_ButterflyGrid, butterfly_masks, "butterfly", false)
+    ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_ButterflyGrid, modified_butterfly_grids, "modified-butterfly", true)
+    ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_ButterflyGrid, modified_butterfly_masks, "modified-butterfly", false)
+    ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Stencil path: build the table once (coarse -> level 2; arguments: mesh
 // size, levels, threads), then re-apply it to new positions, as for animation.
 void stencil_build_bench(benchmark::State& state, bool grids) {

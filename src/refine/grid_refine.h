@@ -1,18 +1,19 @@
 #pragma once
 // The grid path of refine(): the remaining levels of a quad- or
 // triangle-split scheme that declares its regular rule
-// (FastPath::regular_grid, FastPath::regular_triangle_grid), made in one go.
+// (FastPath::regular_grid or regular_grid_of, FastPath::regular_triangle_grid),
+// made in one go.
 //
 // Each face of the starting level (all quads, or all triangles) refines on
 // its own. A face whose corners are interior vertices of the regular
 // valence (4 or 6) with no sharp edge or corner tag is a regular patch: its
-// control points (4 x 4, or the 12 of the triangular lattice) are gathered
+// control points (4 x 4, up to 8 x 8 for wider stencils, whose points must
+// then all be regular; or the 12 of the triangular lattice) are gathered
 // once and refined as a grid by the declared stencil, without any
 // intermediate topology. The other faces (extraordinary or sharp corners,
-// boundaries) are refined by the masks on a small mesh: those faces and the
-// faces sharing a vertex with them, which is everything their points read
-// (a second ring where tags are present, for the rules at the first ring's
-// vertices). Vertex numbers, faces and tags of the result are computed by
+// boundaries) are refined by the masks on a small mesh: those faces and
+// rings of faces around them, which hold everything their points read
+// (grid_common.h's masks_mesh()). Vertex numbers, faces and tags of the result are computed by
 // index arithmetic (grid_numbering.h; triangle_numbering.h, which derives
 // light arrays for all but the last two levels), so the result is the
 // masks' mesh (the same numbering, tags and face-varying values; positions

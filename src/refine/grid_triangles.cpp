@@ -121,24 +121,30 @@ void split_face_varying(const FaceVaryingLevels& levels, Index face, const std::
 struct TrianglePlan {
   const MeshTopology& topology;
   TriangleNumbering numbering;
+  RegularTriangleGrid rule;
+  int reach = 1;  // the patch's steps beyond the triangle
   int levels = 0;
   int n = 0;           // grid intervals per face side: 2^levels
   Index per_face = 0;  // final faces per face: 4^levels
   std::vector<char> regular = {};
-  std::vector<Index> patches = {};  // 16 slots per face (triangle_patch.h), those of regular faces set
+  std::vector<Index> patches = {};  // the reach's slots per face (triangle_patch.h), those of regular faces set
   MasksMesh local = {};
   RefineOptions by_masks = {};
 
-  const Index* patch(Index f) const { return patches.data() + 16 * static_cast<std::size_t>(f); }
+  std::size_t slots() const { return static_cast<std::size_t>(triangle_slots(reach)); }
+  const Index* patch(Index f) const { return patches.data() + slots() * static_cast<std::size_t>(f); }
   std::int64_t last_faces() const { return numbering.faces(levels); }
   std::int64_t last_vertices() const { return numbering.vertices(levels); }
 };
 
 std::optional<TrianglePlan> plan_triangles(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                            const RefineOptions& options, int levels) {
-  if (!scheme.fast_path.regular_triangle_grid || scheme.split != SplitRule::triangle || scheme.steps ||
-      !covers_level(level, t, options, levels, 3) || t.face_count() == 0)
+  const std::optional<RegularTriangleGrid> rule = regular_triangle_grid_of(scheme);
+  if (!rule || scheme.split != SplitRule::triangle || scheme.steps || !covers_level(level, t, options, levels, 3) ||
+      t.face_count() == 0)
     return std::nullopt;
+  const int reach = rule->patch_reach();
+  const auto slots = static_cast<std::size_t>(triangle_slots(reach));
   std::optional<TriangleLevel> start = triangle_level(t);
   if (!start) return std::nullopt;
   // Refused where the last level overflows the index type.
@@ -154,23 +160,29 @@ std::optional<TrianglePlan> plan_triangles(const PolygonMesh& level, const MeshT
   const Index nf = t.face_count();
   std::vector<char> regular(static_cast<std::size_t>(nf));
   std::vector<Index> patches;
-  assign_large(patches, 16 * static_cast<std::size_t>(nf));
+  assign_large(patches, slots * static_cast<std::size_t>(nf));
   const std::vector<char> sharp = sharp_vertices(level, t);
   tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::array<Index, 16> patch;
+    std::array<Index, kMaxTriangleSlots> patch;
+    const std::span<Index> points(patch.data(), slots);
     for (Index f = range.begin(); f != range.end(); ++f) {
-      const auto corners = t.face_vertices(f);
-      const bool is_regular =
-          gather_triangle_patch(t, f, patch) &&
-          std::none_of(corners.begin(), corners.end(), [&](Index v) { return sharp[static_cast<std::size_t>(v)] != 0; });
+      const bool is_regular = gather_triangle_patch(t, f, reach, sharp, points);
       regular[static_cast<std::size_t>(f)] = is_regular;
-      if (is_regular) std::copy(patch.begin(), patch.end(), patches.begin() + 16 * static_cast<std::ptrdiff_t>(f));
+      if (is_regular)
+        std::copy(points.begin(), points.end(), patches.begin() + static_cast<std::ptrdiff_t>(slots * static_cast<std::size_t>(f)));
     }
   });
-  std::optional<MasksMesh> local = masks_mesh(level, t, regular);
+  // The masks' mesh keeps its artificial boundary beyond what the faces'
+  // points read: one ring for Loop's rules. Where edge points read wings
+  // two steps out, one ring changes the points of
+  // tests/refine/grid_butterfly_test.cpp's meshes; two give the masks'
+  // values there, and three keep a ring of margin.
+  std::optional<MasksMesh> local = masks_mesh(level, t, regular, reach == 1 ? 1 : 3);
   if (!local) return std::nullopt;  // mostly irregular: the masks first
   return TrianglePlan{.topology = t,
                       .numbering = TriangleNumbering(std::move(*start), levels),
+                      .rule = *rule,
+                      .reach = reach,
                       .levels = levels,
                       .n = 1 << levels,
                       .per_face = static_cast<Index>(faces / nf),
@@ -232,13 +244,17 @@ std::optional<PolygonMesh> refine_triangles_as_grids(const PolygonMesh& level, c
     std::copy(in.values.begin(), in.values.end(), channel.values.begin());
     assign_large(channel.indices, 3 * static_cast<std::size_t>(plan->last_faces()));
   }
-  const RegularTriangleGrid& rule = *scheme.fast_path.regular_triangle_grid;
+  const RegularTriangleGrid& rule = plan->rule;
   const PointValues values(level);
-  const int width = values.width, n = plan->n, side = n + 3;
+  const int width = values.width, n = plan->n, reach = plan->reach, side = n + 2 * reach + 1;
+  auto refine_grid = [&](Scratch& s) {
+    if (reach == 1) width == 3 ? refine_triangle_patch<3, 1>(rule, levels, width, s) : refine_triangle_patch<0, 1>(rule, levels, width, s);
+    else width == 3 ? refine_triangle_patch<3, 2>(rule, levels, width, s) : refine_triangle_patch<0, 2>(rule, levels, width, s);
+  };
   tbb::enumerable_thread_specific<Scratch> scratch;
   tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
     Scratch& s = scratch.local();
-    s.size_for(n, width);
+    s.size_for(n, width, reach);
     for (Index f = range.begin(); f != range.end(); ++f) {
       walk_face(*plan, f, local_refined.face_indices, s, [&](const SubTriangle& sub) {
         const auto at = static_cast<std::size_t>(sub.face) * 3;
@@ -256,12 +272,11 @@ std::optional<PolygonMesh> refine_triangles_as_grids(const PolygonMesh& level, c
         continue;
       }
       const Index* patch = plan->patch(f);
-      for (std::size_t i = 0; i < 16; ++i)
+      for (std::size_t i = 0; i < plan->slots(); ++i)
         if (patch[i] != kInvalidIndex) values.gather(patch[i], s.grid.data() + i * static_cast<std::size_t>(width));
-      if (width == 3) refine_triangle_patch<3>(rule, levels, width, s);
-      else refine_triangle_patch<0>(rule, levels, width, s);
+      refine_grid(s);
       for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
-        scatter(s.grid.data() + static_cast<std::size_t>(((y + 1) * side + x + 1) * width), s.index[at], out);
+        scatter(s.grid.data() + static_cast<std::size_t>(((y + reach) * side + x + reach) * width), s.index[at], out);
       });
     }
   });
@@ -280,11 +295,11 @@ std::optional<StencilTable> triangle_stencils_as_grids(const PolygonMesh& level,
     local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
     local_table = refine_stencil_table(plan->local.mesh, scheme, plan->by_masks);
   }
-  const std::vector<std::array<double, 16>> weights =
-      triangle_point_weights(*scheme.fast_path.regular_triangle_grid, levels);
+  const std::vector<double> weights = triangle_point_weights(plan->rule, levels);
+  const std::size_t slots = plan->slots();
   auto for_each_regular_entry = [&](int x, int y, auto&& fn) {
-    const auto& w = weights[static_cast<std::size_t>(y * (plan->n + 1) + x)];
-    for (std::size_t k = 0; k < 16; ++k)
+    const double* w = weights.data() + static_cast<std::size_t>(y * (plan->n + 1) + x) * slots;
+    for (std::size_t k = 0; k < slots; ++k)
       if (w[k] != 0.0) fn(k, w[k]);
   };
 
@@ -322,7 +337,7 @@ std::optional<StencilTable> triangle_stencils_as_grids(const PolygonMesh& level,
   for_each_face([&](Index f, const Scratch& s) {
     const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
     const Index* patch = plan->patch(f);
-    std::array<std::pair<Index, double>, 16> entries;
+    std::array<std::pair<Index, double>, kMaxTriangleSlots> entries;
     std::vector<std::pair<Index, double>> mapped;  // a masks' row over the level's vertices
     for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
       std::span<std::pair<Index, double>> row;

@@ -591,7 +591,7 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   PolygonMesh result;
   std::optional<PolygonMesh> by_grids;
   Finish as_grids;
-  if (options.regular_grids && (regular_grid_of(scheme) || scheme.fast_path.regular_triangle_grid))
+  if (options.regular_grids && (regular_grid_of(scheme) || regular_triangle_grid_of(scheme)))
     as_grids = [&](const PolygonMesh& level, const MeshTopology& topology, int remaining) {
       by_grids = detail::refine_as_grids(level, topology, scheme, options, remaining);
       return by_grids.has_value();
@@ -660,7 +660,7 @@ StencilTable refine_stencil_table(const PolygonMesh& mesh, const Scheme& scheme,
   const CreaseMethod method = crease_method_of(mesh, options);
   std::optional<StencilTable> total;
   Finish as_grids;  // the remaining levels' table by the grid path, composed onto the levels' before
-  if (options.regular_grids && (regular_grid_of(scheme) || scheme.fast_path.regular_triangle_grid))
+  if (options.regular_grids && (regular_grid_of(scheme) || regular_triangle_grid_of(scheme)))
     as_grids = [&](const PolygonMesh& level, const MeshTopology& topology, int remaining) {
       std::optional<StencilTable> rest = detail::stencils_as_grids(level, topology, scheme, options, remaining);
       if (!rest) return false;

@@ -219,6 +219,17 @@ void butterfly_edge_point(const LevelView& level, Index e, EdgeRule rule, MaskBu
 
 void interpolating_vertex_point(const LevelView&, Index v, VertexRule, MaskBuilder& mask) { mask.add(v, 1.0); }
 
+// On regular triangles (both ends of every edge interior of valence 6,
+// no sharp edge) both schemes are the 8-point rule: old points stay; an
+// edge point is 1/2 on the ends, 2w on the opposite vertices and -w on the
+// wings (the modified Butterfly's w is 1/16).
+std::optional<RegularTriangleGrid> eight_point_grid(const SchemeParameters& parameters) {
+  const double w = std::get<TensionParameters>(parameters).tension;
+  return RegularTriangleGrid{.centre = 1.0, .ring = 0.0, .near = 0.5, .far = 2 * w, .wing = -w};
+}
+constexpr RegularTriangleGrid kModifiedRegularGrid{
+    .centre = 1.0, .ring = 0.0, .near = 0.5, .far = 2 * kButterflyTension, .wing = -kButterflyTension};
+
 }  // namespace
 
 const Scheme& butterfly_scheme() noexcept {
@@ -230,6 +241,7 @@ const Scheme& butterfly_scheme() noexcept {
       .split = SplitRule::triangle,
       .traits = {.interpolating = true, .needs_triangles = true},
       .masks = {.edge_point = butterfly_edge_point, .vertex_point = interpolating_vertex_point},
+      .fast_path = {.regular_triangle_grid_of = eight_point_grid},
       .parameters = TensionParameters{kButterflyTension}};
   return scheme;
 }
@@ -242,7 +254,8 @@ const Scheme& modified_butterfly_scheme() noexcept {
       "SIGGRAPH 1996; boundary rules from D. Zorin's survey, section 4",
       .split = SplitRule::triangle,
       .traits = {.interpolating = true, .needs_triangles = true},
-      .masks = {.edge_point = modified_butterfly_edge_point, .vertex_point = interpolating_vertex_point}};
+      .masks = {.edge_point = modified_butterfly_edge_point, .vertex_point = interpolating_vertex_point},
+      .fast_path = {.regular_triangle_grid = &kModifiedRegularGrid}};
   return scheme;
 }
 

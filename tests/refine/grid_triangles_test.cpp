@@ -13,6 +13,7 @@
 #include <array>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -83,14 +84,16 @@ TEST(GridTriangles, KernelReadsOnlyTheHexagonAndIsSymmetric) {
   // every point's weights sum to 1, and mirroring the triangle across its
   // line i = j (swapping i and j) mirrors the weights.
   const RegularTriangleGrid& rule = *loop_scheme().fast_path.regular_triangle_grid;
+  ASSERT_EQ(rule.patch_reach(), 1);
   auto slot = [](int i, int j) { return static_cast<std::size_t>((i + 1) + 4 * (j + 1)); };
   for (int levels = 1; levels <= 5; ++levels) {
     const int n = 1 << levels;
-    const std::vector<std::array<double, 16>> weights = detail::triangle_point_weights(rule, levels);
+    const std::vector<double> weights = detail::triangle_point_weights(rule, levels);
+    ASSERT_EQ(weights.size(), static_cast<std::size_t>((n + 1) * (n + 1)) * 16);
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i + j <= n; ++i) {
-        const auto& w = weights[static_cast<std::size_t>(i + (n + 1) * j)];
-        const auto& mirrored = weights[static_cast<std::size_t>(j + (n + 1) * i)];
+        const std::span<const double> w(weights.data() + static_cast<std::size_t>(i + (n + 1) * j) * 16, 16);
+        const std::span<const double> mirrored(weights.data() + static_cast<std::size_t>(j + (n + 1) * i) * 16, 16);
         double sum = 0.0;
         for (const double x : w) sum += x;
         EXPECT_NEAR(sum, 1.0, 1e-14) << "point (" << i << ", " << j << ") after " << levels << " levels";

@@ -449,13 +449,20 @@ struct RegularGrid {
 /// valence 6, no sharp edge), on the triangular lattice: a new vertex point
 /// is `centre` times its vertex plus `ring` times each of its six
 /// neighbours; a new edge point is `near` times each end of its edge plus
-/// `far` times each of the two vertices opposite it. Declared where the
-/// scheme's masks there are these (a test derives them from the masks).
+/// `far` times each of the two vertices opposite it plus `wing` times each
+/// of the four vertices across the other edges of the edge's two triangles
+/// (the Butterfly's wings). Declared where the scheme's masks there are
+/// these (a test derives them from the masks).
 struct RegularTriangleGrid {
-  double centre;  ///< vertex point: weight on the vertex itself
-  double ring;    ///< vertex point: weight on each of its six neighbours
-  double near;    ///< edge point: weight on each end of the edge
-  double far;     ///< edge point: weight on each of the two vertices opposite the edge
+  double centre;      ///< vertex point: weight on the vertex itself
+  double ring;        ///< vertex point: weight on each of its six neighbours
+  double near;        ///< edge point: weight on each end of the edge
+  double far;         ///< edge point: weight on each of the two vertices opposite the edge
+  double wing = 0.0;  ///< edge point: weight on each of its four wing vertices
+
+  /// How many steps beyond a triangle its patch takes: 1 (its corners'
+  /// rings, 12 points), or 2 where edge points read wings (27 points).
+  int patch_reach() const noexcept { return wing != 0.0 ? 2 : 1; }
 };
 
 /// Shortcuts of the fast path (refine()), each held to the masks by tests.
@@ -482,6 +489,10 @@ struct FastPath {
   std::optional<RegularGrid> (*regular_grid_of)(const SchemeParameters& parameters) = nullptr;
   /// The same for a triangle-split scheme (RegularTriangleGrid).
   const RegularTriangleGrid* regular_triangle_grid = nullptr;
+  /// The same for a triangle-split family whose regular rule follows its
+  /// parameters (the Butterfly's tension). Used where regular_triangle_grid
+  /// is nullptr.
+  std::optional<RegularTriangleGrid> (*regular_triangle_grid_of)(const SchemeParameters& parameters) = nullptr;
 };
 
 /// A subdivision scheme, declared by its rule file with designated
@@ -526,6 +537,16 @@ struct Scheme {
 inline std::optional<RegularGrid> regular_grid_of(const Scheme& scheme) {
   if (scheme.fast_path.regular_grid) return *scheme.fast_path.regular_grid;
   if (scheme.fast_path.regular_grid_of) return scheme.fast_path.regular_grid_of(scheme.parameters);
+  return std::nullopt;
+}
+
+/// The same for a triangle-split scheme (FastPath::regular_triangle_grid,
+/// else FastPath::regular_triangle_grid_of).
+/// \param scheme the scheme, possibly a copy with changed parameters.
+/// \return the rule; nullopt where the scheme declares none for them.
+inline std::optional<RegularTriangleGrid> regular_triangle_grid_of(const Scheme& scheme) {
+  if (scheme.fast_path.regular_triangle_grid) return *scheme.fast_path.regular_triangle_grid;
+  if (scheme.fast_path.regular_triangle_grid_of) return scheme.fast_path.regular_triangle_grid_of(scheme.parameters);
   return std::nullopt;
 }
 
