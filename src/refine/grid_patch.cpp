@@ -4,6 +4,7 @@
 #include "grid_patch.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace subdiv::detail {
 
@@ -55,18 +56,25 @@ bool gather_patch(const MeshTopology& t, Index f, int reach, const std::vector<c
     return true;
   };
   if (t.face_size(f) != 4) return false;
-  // Up and down the column of faces through f, then along each row.
-  const PlacedQuad root{t.face_first_corner(f), 0, 0};
-  for (const int dy : {1, -1}) {
-    std::optional<PlacedQuad> column = root;
-    for (int y = 0; column && y <= reach; ++y) {
-      if (y > 0 && !(column = step(t, *column, 0, dy))) return false;
-      for (const int dx : {1, -1}) {
-        std::optional<PlacedQuad> q = column;
-        for (int x = 0; x <= reach; ++x) {
-          if (x > 0 && !(q = step(t, *q, dx, 0))) return false;
-          if (!place(*q)) return false;
-        }
+  // The column of faces through f, up and down, then each column face's row
+  // left and right: every face of the (2r + 1)^2 block placed once.
+  std::array<PlacedQuad, 2 * kMaxPatchReach + 1> column;
+  column[static_cast<std::size_t>(reach)] = {t.face_first_corner(f), 0, 0};
+  for (const int dy : {1, -1})
+    for (int y = dy; std::abs(y) <= reach; y += dy) {
+      const std::optional<PlacedQuad> q = step(t, column[static_cast<std::size_t>(reach + y - dy)], 0, dy);
+      if (!q) return false;
+      column[static_cast<std::size_t>(reach + y)] = *q;
+    }
+  for (int y = -reach; y <= reach; ++y) {
+    const PlacedQuad& middle = column[static_cast<std::size_t>(reach + y)];
+    if (!place(middle)) return false;
+    for (const int dx : {1, -1}) {
+      PlacedQuad q = middle;
+      for (int x = 1; x <= reach; ++x) {
+        const std::optional<PlacedQuad> next = step(t, q, dx, 0);
+        if (!next || !place(*next)) return false;
+        q = *next;
       }
     }
   }

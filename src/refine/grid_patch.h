@@ -70,11 +70,14 @@ void refine_line(const RegularGrid& rule, const double* in, std::ptrdiff_t in_st
   const std::ptrdiff_t is = in_stride * w, os = out_stride * w;
   const int fine = 2 * m - 2 * kReach - 1;
   for (int t = 0; t < fine; ++t) {
-    // Fine point t is at position t - r; coarse point j at j - r.
-    const int p = t - kReach;
+    // Fine point t is at position p = t - r, coarse point j at j - r: an
+    // even p = 2i reads coarse points from i - kEven, at j = (t + r) / 2 -
+    // kEven; an odd p = 2i + 1 from i - kOdd + 1, at j = (t + r - 1) / 2 -
+    // kOdd + 1 (t + r >= 1, so the halving is exact and cheap).
+    const auto half = static_cast<unsigned>(t + kReach) / 2u;
     double* o = out + t * os;
-    if (p % 2 == 0) {
-      const double* a = in + (p / 2 + kReach - kEven) * is;
+    if ((t + kReach) % 2 == 0) {
+      const double* a = in + (static_cast<int>(half) - kEven) * is;
       const double* k = rule.even.data() + 2 - kEven;
       for (std::ptrdiff_t j = 0; j < w; ++j) {
         double sum = k[0] * a[j];
@@ -82,8 +85,7 @@ void refine_line(const RegularGrid& rule, const double* in, std::ptrdiff_t in_st
         o[j] = sum;
       }
     } else {
-      const int i = (p - 1) / 2;  // exact: p - 1 is even
-      const double* a = in + (i + kReach - kOdd + 1) * is;
+      const double* a = in + (static_cast<int>(half) - kOdd + 1) * is;
       const double* k = rule.odd.data() + 2 - kOdd;
       for (std::ptrdiff_t j = 0; j < w; ++j) {
         double sum = k[0] * a[j];

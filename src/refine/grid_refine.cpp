@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -304,18 +305,26 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
     local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
     local_table = refine_stencil_table(plan->local.mesh, scheme, plan->by_masks);
   }
-  // A regular point's row: fn(control point side j + i, weight) for each
-  // nonzero product of the line weights.
+  // A regular point's row, the same for every face: the nonzero products of
+  // the line weights, on control point side j + i, made once per grid point.
   const std::vector<double> weights = line_weights(plan->rule, levels);
   const auto side = static_cast<std::size_t>(plan->side);
-  auto for_each_regular_entry = [&](int x, int y, auto&& fn) {
-    const double* wx = weights.data() + static_cast<std::size_t>(x) * side;
-    const double* wy = weights.data() + static_cast<std::size_t>(y) * side;
-    for (std::size_t j = 0; j < side; ++j)
-      for (std::size_t i = 0; i < side; ++i) {
-        const double w = wx[i] * wy[j];
-        if (w != 0.0) fn(side * j + i, w);
-      }
+  const auto points = static_cast<std::size_t>(plan->n + 1);
+  std::vector<std::size_t> entry_offsets{0};
+  std::vector<std::pair<std::size_t, double>> point_entries;
+  for (std::size_t y = 0; y < points; ++y)
+    for (std::size_t x = 0; x < points; ++x) {
+      for (std::size_t j = 0; j < side; ++j)
+        for (std::size_t i = 0; i < side; ++i) {
+          const double w = weights[x * side + i] * weights[y * side + j];
+          if (w != 0.0) point_entries.emplace_back(side * j + i, w);
+        }
+      entry_offsets.push_back(point_entries.size());
+    }
+  auto regular_entries = [&](int x, int y) {
+    const std::size_t at = static_cast<std::size_t>(y) * points + static_cast<std::size_t>(x);
+    return std::span<const std::pair<std::size_t, double>>(point_entries.data() + entry_offsets[at],
+                                                           entry_offsets[at + 1] - entry_offsets[at]);
   };
 
   // Each vertex's row size, from its owning face; then the rows in place.
@@ -336,10 +345,9 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
   for_each_face([&](Index f, const Scratch& s) {
     const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
     for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
-      Index size = 0;
-      if (grid) for_each_regular_entry(x, y, [&](std::size_t, double) { ++size; });
-      else size = static_cast<Index>(local_table.row_vertices(s.local_index[at]).size());
-      offsets[static_cast<std::size_t>(s.index[at]) + 1] = size;
+      const std::size_t size =
+          grid ? regular_entries(x, y).size() : local_table.row_vertices(s.local_index[at]).size();
+      offsets[static_cast<std::size_t>(s.index[at]) + 1] = static_cast<Index>(size);
     });
   });
   std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
@@ -355,7 +363,8 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
     std::array<std::pair<Index, double>, kMaxPatchPoints> entries;
     for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
       std::size_t count = 0;
-      if (grid) for_each_regular_entry(x, y, [&](std::size_t k, double w) { entries[count++] = {patch[k], w}; });
+      if (grid)
+        for (const auto& [k, w] : regular_entries(x, y)) entries[count++] = {patch[k], w};
       const auto vs = grid ? std::span<const Index>() : local_table.row_vertices(s.local_index[at]);
       const auto ws = grid ? std::span<const double>() : local_table.row_weights(s.local_index[at]);
       std::vector<std::pair<Index, double>> mapped;  // a masks' row over the level's vertices

@@ -1,6 +1,7 @@
 #pragma once
 // The grid path (grid_refine.h) of triangle-split schemes that declare
-// their regular rule (FastPath::regular_triangle_grid): regular triangles
+// their regular rule (FastPath::regular_triangle_grid or
+// regular_triangle_grid_of): regular triangles
 // refined on the triangular lattice (triangle_patch.h), numbered by
 // triangle_numbering.h; the others by the masks on a small mesh.
 

@@ -88,8 +88,23 @@ void refine_triangle_patch(const RegularTriangleGrid& rule, int levels, int widt
             o[k] = rule.centre * p[k] + rule.ring * (a[k] + b[k] + c[k] + d[k] + e[k] + f[k]);
           continue;
         }
-        // An edge point: the edge's ends a, b and the vertices c, d opposite
-        // (as axial offsets of a's point).
+        // An edge point: the edge's ends a, b and the vertices c, d opposite.
+        if constexpr (kReach == 1) {  // the hot path of Loop's grids: pointers straight away
+          const double *a, *b, *c, *d;
+          if (y % 2 == 0) {  // along (1, 0)
+            const int i = (x - 1) / 2, j = y / 2;
+            a = at(i, j), b = at(i + 1, j), c = at(i, j + 1), d = at(i + 1, j - 1);
+          } else if (x % 2 == 0) {  // along (0, 1)
+            const int i = x / 2, j = (y - 1) / 2;
+            a = at(i, j), b = at(i, j + 1), c = at(i + 1, j), d = at(i - 1, j + 1);
+          } else {  // along (1, -1)
+            const int i = (x - 1) / 2, j = (y + 1) / 2;
+            a = at(i, j), b = at(i + 1, j - 1), c = at(i + 1, j), d = at(i, j - 1);
+          }
+          for (std::ptrdiff_t k = 0; k < w; ++k) o[k] = rule.near * (a[k] + b[k]) + rule.far * (c[k] + d[k]);
+          continue;
+        }
+        // The same as axial coordinates, for the wings.
         int ai, aj, bi, bj, ci, cj, di, dj;
         if (y % 2 == 0) {  // along (1, 0)
           ai = (x - 1) / 2, aj = y / 2, bi = ai + 1, bj = aj, ci = ai, cj = aj + 1, di = ai + 1, dj = aj - 1;
@@ -99,16 +114,12 @@ void refine_triangle_patch(const RegularTriangleGrid& rule, int levels, int widt
           ai = (x - 1) / 2, aj = (y + 1) / 2, bi = ai + 1, bj = aj - 1, ci = ai + 1, cj = aj, di = ai, dj = aj - 1;
         }
         const double *a = at(ai, aj), *b = at(bi, bj), *c = at(ci, cj), *d = at(di, dj);
-        if constexpr (kReach == 1) {
-          for (std::ptrdiff_t k = 0; k < w; ++k) o[k] = rule.near * (a[k] + b[k]) + rule.far * (c[k] + d[k]);
-        } else {
-          // The wings: across (b, c), (a, c), (b, d) and (a, d), each the
-          // parallelogram's fourth point.
-          const double *e1 = at(bi + ci - ai, bj + cj - aj), *e2 = at(ai + ci - bi, aj + cj - bj),
-                       *e3 = at(bi + di - ai, bj + dj - aj), *e4 = at(ai + di - bi, aj + dj - bj);
-          for (std::ptrdiff_t k = 0; k < w; ++k)
-            o[k] = rule.near * (a[k] + b[k]) + rule.far * (c[k] + d[k]) + rule.wing * (e1[k] + e2[k] + e3[k] + e4[k]);
-        }
+        // The wings: across (b, c), (a, c), (b, d) and (a, d), each the
+        // parallelogram's fourth point.
+        const double *e1 = at(bi + ci - ai, bj + cj - aj), *e2 = at(ai + ci - bi, aj + cj - bj),
+                     *e3 = at(bi + di - ai, bj + dj - aj), *e4 = at(ai + di - bi, aj + dj - bj);
+        for (std::ptrdiff_t k = 0; k < w; ++k)
+          o[k] = rule.near * (a[k] + b[k]) + rule.far * (c[k] + d[k]) + rule.wing * (e1[k] + e2[k] + e3[k] + e4[k]);
       }
     }
     s.grid.swap(s.refined);

@@ -125,8 +125,9 @@ TEST(GridButterfly, KernelReadsOnlyTheHexagonAndIsSymmetric) {
         EXPECT_NEAR(sum, 1.0, 1e-14) << "point (" << i << ", " << j << ") after " << levels << " levels";
         for (int b = -2; b <= 3; ++b)
           for (int a = -2; a <= 3; ++a) {
-            if (!detail::in_hexagon(a, b, 1, 2))
+            if (!detail::in_hexagon(a, b, 1, 2)) {
               EXPECT_EQ(w[slot(a, b)], 0.0) << "slot (" << a << ", " << b << ") reaches point (" << i << ", " << j << ")";
+            }
             EXPECT_NEAR(w[slot(a, b)], mirrored[slot(b, a)], 1e-15);
           }
       }

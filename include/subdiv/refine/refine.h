@@ -107,7 +107,8 @@ struct RefineOptions : RuleOptions {
   /// (FastPath::regular_grid: Catmull-Clark, bilinear;
   /// FastPath::regular_grid_of: Kobbelt, gcc and midpoint of degree 3, 5 and
   /// 7 with alpha = 1/4, beta = 1/2 at valence 4;
-  /// FastPath::regular_triangle_grid: Loop, Loop-Warren, linear) as grids,
+  /// FastPath::regular_triangle_grid and regular_triangle_grid_of: Loop,
+  /// Loop-Warren, linear, butterfly, modified-butterfly) as grids,
   /// the remaining levels at once, where the level has only quads (or only
   /// triangles, with at least three levels to go) (refine() and
   /// refine_stencil_table(); docs/refinement.md says where it declines). The
