@@ -61,15 +61,16 @@ std::vector<double> line_weights(const RegularGrid& rule, int levels);
 // otherwise). Reach 1 reads one point each side (the even rule's middle
 // three weights, the odd rule's middle two), reach 2 reads the odd rule's
 // four, reach 3 every weight.
+// Only the points t_begin <= t < t_end are made (all of them by default).
 template <int kWidth, int kReach>
 void refine_line(const RegularGrid& rule, const double* in, std::ptrdiff_t in_stride, int m, double* out,
-                 std::ptrdiff_t out_stride, int width) {
+                 std::ptrdiff_t out_stride, int width, int t_begin = 0, int t_end = -1) {
   constexpr int kEven = kReach == 3 ? 2 : 1;  // even points read i - kEven .. i + kEven
   constexpr int kOdd = kReach == 1 ? 1 : 2;   // odd points read i - kOdd + 1 .. i + kOdd
   const std::ptrdiff_t w = kWidth > 0 ? kWidth : width;
   const std::ptrdiff_t is = in_stride * w, os = out_stride * w;
-  const int fine = 2 * m - 2 * kReach - 1;
-  for (int t = 0; t < fine; ++t) {
+  const int fine = t_end >= 0 ? t_end : 2 * m - 2 * kReach - 1;
+  for (int t = t_begin; t < fine; ++t) {
     // Fine point t is at position p = t - r, coarse point j at j - r: an
     // even p = 2i reads coarse points from i - kEven, at j = (t + r) / 2 -
     // kEven; an odd p = 2i + 1 from i - kOdd + 1, at j = (t + r - 1) / 2 -
@@ -120,17 +121,21 @@ struct Scratch {
 
 // Refines the (2r + 2)^2 control values in scratch.grid `levels` times, r =
 // kReach: the (n + 2r + 1)^2 grid of the patch's points from -r to n + r, in
-// scratch.grid.
+// scratch.grid, of which the last level makes only the face's own, 0 .. n
+// (no later level reads the others).
 template <int kWidth, int kReach>
 void refine_patch(const RegularGrid& rule, int levels, int width, Scratch& s) {
   int m = patch_side(kReach);
   for (int l = 0; l < levels; ++l) {
     const int fine = 2 * m - 2 * kReach - 1;
+    const bool last = l + 1 == levels;
+    const int begin = last ? kReach : 0, end = last ? fine - kReach : fine;
     for (int r = 0; r < m; ++r)
-      refine_line<kWidth, kReach>(rule, s.grid.data() + r * m * width, 1, m, s.rows.data() + r * fine * width, 1, width);
-    for (int col = 0; col < fine; ++col)
+      refine_line<kWidth, kReach>(rule, s.grid.data() + r * m * width, 1, m, s.rows.data() + r * fine * width, 1, width,
+                                  begin, end);
+    for (int col = begin; col < end; ++col)
       refine_line<kWidth, kReach>(rule, s.rows.data() + col * width, fine, m, s.refined.data() + col * width, fine,
-                                  width);
+                                  width, begin, end);
     s.grid.swap(s.refined);
     m = fine;
   }

@@ -64,8 +64,9 @@ TriangleOwnership triangle_ownership_of(const MeshTopology& t, Index f, int n);
 
 // Refines the control values in s.grid (width doubles each, at their slots
 // of the (2r + 2)^2 array, r = kReach) `levels` times: the hexagon of n =
-// 2^levels in s.grid. kWidth: width where known at compile time, 0
-// otherwise.
+// 2^levels in s.grid, of which the last level makes only the triangle's
+// own points (no later level reads the others). kWidth: width where known
+// at compile time, 0 otherwise.
 template <int kWidth, int kReach>
 void refine_triangle_patch(const RegularTriangleGrid& rule, int levels, int width, Scratch& s) {
   constexpr int r = kReach;
@@ -76,9 +77,10 @@ void refine_triangle_patch(const RegularTriangleGrid& rule, int levels, int widt
     const std::ptrdiff_t in_side = n + 2 * r + 1, out_side = m + 2 * r + 1;
     const double* in = s.grid.data();
     auto at = [&](int i, int j) { return in + ((i + r) + in_side * (j + r)) * w; };
-    for (int y = -r; y <= m + r; ++y) {
+    const int beyond = l + 1 == levels ? 0 : r;  // how far past the triangle this level's points reach
+    for (int y = -beyond; y <= m + beyond; ++y) {
       double* row = s.refined.data() + out_side * (y + r) * w;
-      for (int x = std::max(-r, -r - y); x <= std::min(m + r, m + r - y); ++x) {
+      for (int x = std::max(-beyond, -beyond - y); x <= std::min(m + beyond, m + beyond - y); ++x) {
         double* o = row + (x + r) * w;
         if (x % 2 == 0 && y % 2 == 0) {  // a vertex point
           const int i = x / 2, j = y / 2;
