@@ -434,10 +434,10 @@ struct RegularGrid {
   std::array<double, 4> odd;   ///< weights on coarse points i-1 .. i+2 of fine point 2i+1
 
   /// How many coarse points beyond a face's two corners its patch takes on
-  /// each side of a grid line, 1 to 3: the fewest from which the stencil
-  /// makes the same reach of points again at the finer level (1: Catmull-
-  /// Clark's 4 x 4 patch; 2: 6 x 6 when odd points read two points each
-  /// side; 3: 8 x 8 when even points do too).
+  /// each side of a grid line: the fewest from which the stencil makes the
+  /// same reach of points again at the finer level.
+  /// \return 1 (Catmull-Clark's 4 x 4 patch), 2 (6 x 6, where odd points
+  ///   read two points each side) or 3 (8 x 8, where even points do too).
   int patch_reach() const noexcept {
     if (even[0] != 0.0 || even[4] != 0.0) return 3;
     if (odd[0] != 0.0 || odd[3] != 0.0) return 2;
@@ -460,8 +460,9 @@ struct RegularTriangleGrid {
   double far;         ///< edge point: weight on each of the two vertices opposite the edge
   double wing = 0.0;  ///< edge point: weight on each of its four wing vertices
 
-  /// How many steps beyond a triangle its patch takes: 1 (its corners'
-  /// rings, 12 points), or 2 where edge points read wings (27 points).
+  /// How many steps beyond a triangle its patch takes.
+  /// \return 1 (its corners' rings, 12 points), or 2 where edge points
+  ///   read wings (27 points).
   int patch_reach() const noexcept { return wing != 0.0 ? 2 : 1; }
 };
 
@@ -534,6 +535,8 @@ struct Scheme {
 /// (FastPath::regular_grid, else FastPath::regular_grid_of).
 /// \param scheme the scheme, possibly a copy with changed parameters.
 /// \return the rule; nullopt where the scheme declares none for them.
+/// \throws std::bad_variant_access if the parameters are not of the
+///   family's kind (a tension for Kobbelt and the Butterfly).
 inline std::optional<RegularGrid> regular_grid_of(const Scheme& scheme) {
   if (scheme.fast_path.regular_grid) return *scheme.fast_path.regular_grid;
   if (scheme.fast_path.regular_grid_of) return scheme.fast_path.regular_grid_of(scheme.parameters);
@@ -544,6 +547,8 @@ inline std::optional<RegularGrid> regular_grid_of(const Scheme& scheme) {
 /// else FastPath::regular_triangle_grid_of).
 /// \param scheme the scheme, possibly a copy with changed parameters.
 /// \return the rule; nullopt where the scheme declares none for them.
+/// \throws std::bad_variant_access if the parameters are not of the
+///   family's kind (a tension for Kobbelt and the Butterfly).
 inline std::optional<RegularTriangleGrid> regular_triangle_grid_of(const Scheme& scheme) {
   if (scheme.fast_path.regular_triangle_grid) return *scheme.fast_path.regular_triangle_grid;
   if (scheme.fast_path.regular_triangle_grid_of) return scheme.fast_path.regular_triangle_grid_of(scheme.parameters);
