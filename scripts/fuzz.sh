@@ -6,8 +6,8 @@
 #   --seconds N   per target, one after the other (default 60: CI's short run)
 #   --runs N      instead: N executions per target (the long campaign)
 #   --max-len B   the largest input tried, in bytes (default 16384)
-#   --targets T   which targets (default all six); a long campaign on two
-#                 cores runs two of these scripts side by side
+#   --targets T   which targets (default all six); they run side by side,
+#                 one per core
 #
 # Seeds are fuzz/seeds (PLY and OFF in every encoding the readers take), the
 # small bundled meshes, tests/data and, where present, the shared meshes (../shared/data/meshes); each target's growing corpus lives in
@@ -82,26 +82,38 @@ fi
 
 findings="$build_dir/findings"
 mkdir -p "$findings"
-status=0
-for target in $targets; do
-  corpus="$build_dir/corpus/$target"
+cat fuzz/dict/{obj,ply,off}.dict > "$seeds/pipeline.dict"
+# One target's run: its summary in build-fuzz/fuzz_<target>.summary, and
+# "found" in build-fuzz/fuzz_<target>.status where it found something.
+run_target() {
+  local target=$1 corpus="$build_dir/corpus/$1" log="$build_dir/fuzz_$1.log" dict
   mkdir -p "$corpus" "$findings/$target"
-  dict=()
   case "$target" in
-    obj|ply|off|gltf|stl) dict=(-dict="fuzz/dict/$target.dict") ;;
-    pipeline) cat fuzz/dict/{obj,ply,off}.dict > "$seeds/pipeline.dict"; dict=(-dict="$seeds/pipeline.dict") ;;
+    pipeline) dict="$seeds/pipeline.dict" ;;
+    *) dict="fuzz/dict/$target.dict" ;;
   esac
-  budget="${seconds} s"; [ "$runs" -ge 0 ] && budget="$runs runs"
-  echo "fuzz.sh: $target for $budget ($(ls "$seeds/$target" | wc -l) seeds)"
-  log="$build_dir/fuzz_$target.log"
-  if ! "$build_dir/fuzz/fuzz_$target" "$corpus" "$seeds/$target" "${dict[@]}" \
+  if ! "$build_dir/fuzz/fuzz_$target" "$corpus" "$seeds/$target" -dict="$dict" \
         -max_total_time="$seconds" -runs="$runs" -timeout=10 -rss_limit_mb=2048 -max_len="$max_len" \
         -print_final_stats=1 \
         -artifact_prefix="$findings/$target/" > "$log" 2>&1; then
-    echo "fuzz.sh: FINDING in $target: see $log and $findings/$target/"
-    tail -40 "$log"
-    status=1
+    { echo "fuzz.sh: FINDING in $target: see $log and $findings/$target/"; tail -40 "$log"; } > "$build_dir/fuzz_$target.summary"
+    echo found > "$build_dir/fuzz_$target.status"
+    return 0
   fi
-  grep -E "^stat::|DONE|cov: " "$log" | tail -7 || true
+  grep -E "^stat::|DONE|cov: " "$log" | tail -7 > "$build_dir/fuzz_$target.summary" || true
+}
+# The targets run side by side, one per core; their summaries follow.
+budget="${seconds} s"; [ "$runs" -ge 0 ] && budget="$runs runs"
+for target in $targets; do
+  rm -f "$build_dir/fuzz_$target.status" "$build_dir/fuzz_$target.summary"
+  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n || true; done
+  echo "fuzz.sh: $target for $budget ($(ls "$seeds/$target" | wc -l) seeds)"
+  run_target "$target" &
+done
+wait
+status=0
+for target in $targets; do
+  cat "$build_dir/fuzz_$target.summary" 2>/dev/null || echo "fuzz.sh: $target left no summary"
+  if [ -f "$build_dir/fuzz_$target.status" ] || [ ! -f "$build_dir/fuzz_$target.summary" ]; then status=1; fi
 done
 exit $status
