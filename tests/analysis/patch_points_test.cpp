@@ -1,0 +1,106 @@
+// The regular Catmull-Clark patch's control points found by walking the
+// topology (src/analysis/patch_points.h): the lattice's own points in grid
+// order from every starting corner, refusals where a patch is not regular,
+// and, on a perturbed torus, the patch at each corner equal to the scheme's
+// limit of that vertex.
+#include "analysis/patch_points.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "analysis/patch_basis.h"
+#include "depth/depth_test_meshes.h"
+#include "subdiv/analysis/limit.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/rules/scheme.h"
+#include "support/test_meshes.h"
+
+namespace subdiv {
+namespace {
+
+/// A (2r + 1)^2 lattice of quads, vertex (i, j) at (i, j, 0).
+PolygonMesh quad_lattice(int r) {
+  PolygonMesh mesh;
+  const int n = 2 * r + 1;
+  for (int j = -r; j <= r; ++j) {
+    for (int i = -r; i <= r; ++i) mesh.positions.push_back({static_cast<double>(i), static_cast<double>(j), 0.0});
+  }
+  const auto at = [&](int i, int j) { return static_cast<Index>((j + r) * n + (i + r)); };
+  for (int j = -r; j < r; ++j) {
+    for (int i = -r; i < r; ++i) {
+      for (const Index v : {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}) mesh.face_indices.push_back(v);
+      mesh.face_offsets.push_back(static_cast<Index>(mesh.face_indices.size()));
+    }
+  }
+  return mesh;
+}
+
+TEST(PatchPoints, LatticeGivesTheGridFromEveryCorner) {
+  const PolygonMesh mesh = quad_lattice(3);
+  const MeshTopology topology(mesh);
+  // The face with corners (0,0) (1,0) (1,1) (0,1).
+  Index face = kInvalidIndex;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.positions[static_cast<std::size_t>(mesh.face(f)[0])] == Vec3{0, 0, 0}) face = f;
+  }
+  ASSERT_NE(face, kInvalidIndex);
+  for (Index k = 0; k < 4; ++k) {
+    const Index corner = topology.face_first_corner(face) + k;
+    const auto points = bicubic_patch_points(topology, corner);
+    ASSERT_TRUE(points.has_value()) << "corner " << k;
+    // The frame of corner k: its vertex is the origin, u toward the next
+    // corner, v toward the previous one.
+    const Vec3 origin = mesh.positions[static_cast<std::size_t>(topology.corner_vertex(corner))];
+    const Vec3 u = mesh.positions[static_cast<std::size_t>(topology.corner_vertex(topology.corner_next(corner)))] - origin;
+    const Vec3 v = mesh.positions[static_cast<std::size_t>(topology.corner_vertex(topology.corner_prev(corner)))] - origin;
+    for (int j = -1; j <= 2; ++j) {
+      for (int i = -1; i <= 2; ++i) {
+        const Vec3 expected = origin + static_cast<double>(i) * u + static_cast<double>(j) * v;
+        const Index vertex = (*points)[static_cast<std::size_t>((i + 1) + 4 * (j + 1))];
+        EXPECT_EQ(mesh.positions[static_cast<std::size_t>(vertex)], expected) << "corner " << k << ", grid (" << i << ", " << j << ")";
+      }
+    }
+  }
+}
+
+TEST(PatchPoints, RefusesIrregularPatches) {
+  // Valence 3 everywhere.
+  const PolygonMesh box = test::cube();
+  const MeshTopology box_topology(box);
+  for (Index c = 0; c < box_topology.corner_count(); ++c) EXPECT_FALSE(bicubic_patch_points(box_topology, c).has_value());
+  // The lattice's faces touching its boundary.
+  const PolygonMesh mesh = quad_lattice(2);
+  const MeshTopology topology(mesh);
+  int regular = 0;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    if (bicubic_patch_points(topology, topology.face_first_corner(f))) ++regular;
+  }
+  EXPECT_EQ(regular, 4);  // the 2 x 2 faces whose corners are all interior
+  // A 3 x 3 torus is regular but its patches repeat vertices.
+  const PolygonMesh small = quad_torus(3, 3, 3.0, 1.0);
+  const MeshTopology small_topology(small);
+  EXPECT_FALSE(bicubic_patch_points(small_topology, 0).has_value());
+}
+
+TEST(PatchPoints, PatchCornersAreTheLimitPositions) {
+  std::mt19937 random(11);
+  const PolygonMesh torus = perturbed(quad_torus(8, 6, 3.0, 1.0), 0.2, random);
+  const MeshTopology topology(torus);
+  const Scheme* scheme = find_scheme("catmull-clark");
+  ASSERT_NE(scheme, nullptr);
+  const LimitResult limit = limit_positions(torus, *scheme);
+  const PatchWeights<16> at_origin = bicubic_bspline_weights(0.0, 0.0);
+  for (Index c = 0; c < topology.corner_count(); ++c) {
+    const auto points = bicubic_patch_points(topology, c);
+    ASSERT_TRUE(points.has_value()) << "corner " << c;
+    Vec3 p{};
+    for (std::size_t k = 0; k < 16; ++k) p = p + at_origin.value[k] * torus.positions[static_cast<std::size_t>((*points)[k])];
+    const Vec3 expected = limit.positions[static_cast<std::size_t>(topology.corner_vertex(c))];
+    EXPECT_LT(norm(p - expected), 1e-12) << "corner " << c;
+  }
+}
+
+}  // namespace
+}  // namespace subdiv
