@@ -2,8 +2,8 @@
 /// \file
 /// Basis functions of the regular patches of Catmull-Clark and Loop, with
 /// their first and second derivatives: the limit surface over a regular face
-/// is sum_i w_i(u, v) p_i over the face's control points. The limit
-/// evaluator of issue "The limit surface at any point" builds on them.
+/// is sum_i w_i(u, v) p_i over the face's control points (their order:
+/// analysis/patch_points.h).
 ///
 /// - Catmull-Clark: the uniform bicubic B-spline over a quad whose four
 ///   corners have valence 4. Control point (i, j), i and j in 0..3, is grid

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "analysis/patch_basis.h"
+
 namespace subdiv {
 namespace {
 
@@ -23,6 +25,20 @@ std::optional<std::array<Index, 3>> points_beyond(const MeshTopology& topology, 
 }
 
 constexpr Index grid_index(int i, int j) { return (i + 1) + 4 * (j + 1); }
+
+/// The index of lattice point (a, b) in kBoxSplineLattice, -1 if absent.
+int lattice_index(int a, int b) {
+  for (std::size_t k = 0; k < kBoxSplineLattice.size(); ++k) {
+    if (kBoxSplineLattice[k][0] == a && kBoxSplineLattice[k][1] == b) return static_cast<int>(k);
+  }
+  return -1;
+}
+
+template <std::size_t N>
+bool all_distinct(std::array<Index, N> points) {
+  std::sort(points.begin(), points.end());
+  return std::adjacent_find(points.begin(), points.end()) == points.end();
+}
 
 }  // namespace
 
@@ -57,9 +73,53 @@ std::optional<std::array<Index, 16>> bicubic_patch_points(const MeshTopology& to
     place(-1, 0, (*beyond)[2]);
   }
   // A small closed mesh can reach the same vertex twice (a 3 x 3 torus).
-  std::array<Index, 16> sorted = points;
-  std::sort(sorted.begin(), sorted.end());
-  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return std::nullopt;
+  if (!all_distinct(points)) return std::nullopt;
+  return points;
+}
+
+std::optional<std::array<Index, 12>> box_spline_patch_points(const MeshTopology& topology, Index corner) {
+  if (topology.face_size(topology.corner_face(corner)) != 3) return std::nullopt;
+  // Corner k of the face, counted from `corner`, sits at kOrigin[k]; in its
+  // frame u points to the next corner and v to the previous one.
+  constexpr std::array<std::array<int, 2>, 3> kOrigin = {{{0, 0}, {1, 0}, {0, 1}}};
+  // A corner's six neighbours counter-clockwise from v, in its frame.
+  constexpr std::array<std::array<int, 2>, 6> kFan = {{{0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}, {1, 0}}};
+  std::array<Index, 12> points{};
+  points.fill(kInvalidIndex);
+  const auto place = [&](int a, int b, Index vertex) {
+    const int k = lattice_index(a, b);
+    if (k < 0) return false;
+    Index& slot = points[static_cast<std::size_t>(k)];
+    if (slot != kInvalidIndex && slot != vertex) return false;
+    slot = vertex;
+    return true;
+  };
+  Index c = corner;
+  for (std::size_t k = 0; k < 3; ++k, c = topology.corner_next(c)) {
+    const Index v = topology.corner_vertex(c);
+    if (topology.vertex_kind(v) != VertexKind::interior || topology.vertex_face_count(v) != 6 ||
+        topology.valence(v) != 6) {
+      return std::nullopt;
+    }
+    const auto [ox, oy] = kOrigin[k];
+    const auto [nx, ny] = kOrigin[(k + 1) % 3];
+    const auto [px, py] = kOrigin[(k + 2) % 3];
+    const int ux = nx - ox, uy = ny - oy, vx = px - ox, vy = py - oy;
+    if (!place(ox, oy, v)) return std::nullopt;
+    // Around the vertex, face by face: each step crosses the edge into the
+    // corner's previous vertex.
+    Index around = c;
+    for (const auto& [a, b] : kFan) {
+      if (topology.face_size(topology.corner_face(around)) != 3) return std::nullopt;
+      if (!place(ox + a * ux + b * vx, oy + a * uy + b * vy, topology.corner_vertex(topology.corner_prev(around)))) {
+        return std::nullopt;
+      }
+      around = topology.corner_across(topology.corner_prev(around));
+      if (around == kInvalidIndex) return std::nullopt;
+    }
+    if (around != c) return std::nullopt;
+  }
+  if (!all_distinct(points)) return std::nullopt;
   return points;
 }
 

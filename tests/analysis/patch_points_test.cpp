@@ -102,5 +102,76 @@ TEST(PatchPoints, PatchCornersAreTheLimitPositions) {
   }
 }
 
+/// A (2r + 1)^2 lattice of vertices (i, j, 0), each cell cut along
+/// (i + 1, j) - (i, j + 1): the three-direction lattice of the box spline.
+PolygonMesh triangle_lattice(int r) {
+  PolygonMesh mesh;
+  const int n = 2 * r + 1;
+  for (int j = -r; j <= r; ++j) {
+    for (int i = -r; i <= r; ++i) mesh.positions.push_back({static_cast<double>(i), static_cast<double>(j), 0.0});
+  }
+  const auto at = [&](int i, int j) { return static_cast<Index>((j + r) * n + (i + r)); };
+  const auto add = [&](std::initializer_list<Index> face) {
+    mesh.face_indices.insert(mesh.face_indices.end(), face);
+    mesh.face_offsets.push_back(static_cast<Index>(mesh.face_indices.size()));
+  };
+  for (int j = -r; j < r; ++j) {
+    for (int i = -r; i < r; ++i) {
+      add({at(i, j), at(i + 1, j), at(i, j + 1)});
+      add({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return mesh;
+}
+
+TEST(PatchPoints, TriangleLatticeGivesTheBoxSplinePointsFromEveryCorner) {
+  const PolygonMesh mesh = triangle_lattice(3);
+  const MeshTopology topology(mesh);
+  // Both triangles of cell (0, 0): (0,0) (1,0) (0,1) and (1,0) (1,1) (0,1).
+  int checked = 0;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    const Vec3 first = mesh.positions[static_cast<std::size_t>(mesh.face(f)[0])];
+    if (first != Vec3{0, 0, 0} && first != Vec3{1, 0, 0}) continue;
+    if (mesh.positions[static_cast<std::size_t>(mesh.face(f)[2])] != Vec3{0, 1, 0}) continue;
+    for (Index k = 0; k < 3; ++k) {
+      const Index corner = topology.face_first_corner(f) + k;
+      const auto points = box_spline_patch_points(topology, corner);
+      ASSERT_TRUE(points.has_value()) << "face " << f << ", corner " << k;
+      const Vec3 origin = mesh.positions[static_cast<std::size_t>(topology.corner_vertex(corner))];
+      const Vec3 u = mesh.positions[static_cast<std::size_t>(topology.corner_vertex(topology.corner_next(corner)))] - origin;
+      const Vec3 v = mesh.positions[static_cast<std::size_t>(topology.corner_vertex(topology.corner_prev(corner)))] - origin;
+      for (std::size_t p = 0; p < 12; ++p) {
+        const Vec3 expected =
+            origin + static_cast<double>(kBoxSplineLattice[p][0]) * u + static_cast<double>(kBoxSplineLattice[p][1]) * v;
+        EXPECT_EQ(mesh.positions[static_cast<std::size_t>((*points)[p])], expected) << "face " << f << ", corner " << k << ", point " << p;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 6);
+  // Faces touching the boundary have no patch; quads neither.
+  EXPECT_FALSE(box_spline_patch_points(topology, 0).has_value());
+  const MeshTopology quads(quad_lattice(3));
+  for (Index c = 0; c < quads.corner_count(); ++c) EXPECT_FALSE(box_spline_patch_points(quads, c).has_value());
+}
+
+TEST(PatchPoints, BoxSplineCornersAreLoopsLimitPositions) {
+  std::mt19937 random(13);
+  const PolygonMesh torus = perturbed(triangle_torus(8, 6, 3.0, 1.0), 0.1, random);
+  const MeshTopology topology(torus);
+  const Scheme* scheme = find_scheme("loop");
+  ASSERT_NE(scheme, nullptr);
+  const LimitResult limit = limit_positions(torus, *scheme);
+  const PatchWeights<12> at_origin = box_spline_weights(0.0, 0.0);
+  for (Index c = 0; c < topology.corner_count(); ++c) {
+    const auto points = box_spline_patch_points(topology, c);
+    ASSERT_TRUE(points.has_value()) << "corner " << c;
+    Vec3 p{};
+    for (std::size_t k = 0; k < 12; ++k) p = p + at_origin.value[k] * torus.positions[static_cast<std::size_t>((*points)[k])];
+    const Vec3 expected = limit.positions[static_cast<std::size_t>(topology.corner_vertex(c))];
+    EXPECT_LT(norm(p - expected), 1e-12) << "corner " << c;
+  }
+}
+
 }  // namespace
 }  // namespace subdiv
