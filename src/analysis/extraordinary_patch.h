@@ -1,0 +1,102 @@
+#pragma once
+/// \file
+/// Exact evaluation of a Catmull-Clark face with one extraordinary corner
+/// (Stam, "Exact evaluation of Catmull-Clark subdivision surfaces at
+/// arbitrary parameter values", SIGGRAPH 1998), with every matrix read off
+/// the project's own refinement instead of published tables.
+///
+/// The model is the ring mesh of an interior vertex of valence N; face F is
+/// the first face at its centre, with the centre at parameter (0, 0), the
+/// next corner at (1, 0) and the previous one at (0, 1). Its face ring (the
+/// vertices of the faces touching F, 2N + 8 of them, in face_ring() order) is
+/// mapped one step down onto the face ring of F's child at the centre by A,
+/// and onto the 16 control points of each of the three other children by
+/// A_k; both come from refine_stencil_table() of the ring mesh. A point at
+/// (s, t) with max(s, t) in [2^-(n+1), 2^-n) lies in child k of level n:
+/// its value is b(s', t') A_k A^n C with A^n = V Lambda^n V^-1 from the
+/// eigen-decomposition of A (the powers are taken by repeated products
+/// where A is not diagonalizable to working accuracy).
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "subdiv/core/types.h"
+#include "subdiv/mesh/topology.h"
+
+namespace subdiv {
+
+/// The vertices of the faces touching a face, in a canonical order: for each
+/// corner of the face, starting at `corner`, the faces around its vertex
+/// counter-clockwise from the face, each face's vertices from that corner
+/// on, each vertex where it first appears. `signature` records, for every
+/// face visited, its size and the list position of each of its vertices:
+/// two faces whose rings have equal signatures have the same structure, so
+/// their lists correspond point by point.
+struct FaceRing {
+  std::vector<Index> vertices;  ///< the ring's vertices in canonical order
+  std::vector<int> signature;   ///< the walk's structure (see above)
+};
+
+/// The face ring of the face holding `corner` (FaceRing).
+/// \param topology the mesh's topology.
+/// \param corner the corner the walk starts at.
+/// \return the ring; empty where a corner of the face is not an interior
+///   vertex with one closed fan.
+/// \pre \p corner is in [0, topology.corner_count()) (unchecked).
+std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner);
+
+/// The limit surface and its derivatives at one parameter of a patch.
+struct PatchPoint {
+  Vec3 position, du, dv, duu, duv, dvv;
+};
+
+/// Catmull-Clark's patch at an extraordinary corner of valence N, read off
+/// the scheme's refinement of the ring mesh (see the file comment).
+class ExtraordinaryPatch {
+ public:
+  /// Builds the model for valence \p valence (>= 3).
+  /// \throws InvalidInputError for a valence below 3.
+  /// \throws Error where the ring mesh's refinement does not have the
+  ///   expected structure (an internal inconsistency).
+  explicit ExtraordinaryPatch(int valence);
+
+  /// \return the valence N.
+  int valence() const noexcept { return valence_; }
+  /// \return the face-ring size, 2N + 8.
+  int size() const noexcept { return static_cast<int>(A_.rows()); }
+  /// \return the signature of the model face's ring: a mesh face whose ring
+  ///   has it (from the extraordinary corner) is evaluated by this patch.
+  const std::vector<int>& signature() const noexcept { return signature_; }
+  /// \return the model's ring mesh positions of the ring's vertices (a
+  ///   planar layout, the centre at the origin), in ring order.
+  const std::vector<Vec3>& layout() const noexcept { return layout_; }
+  /// \return A, the ring's map one step down onto the centre child's ring.
+  const Eigen::MatrixXd& subdivision_matrix() const noexcept { return A_; }
+  /// \return whether A^n is taken through its eigenbasis (else by products).
+  bool uses_eigenbasis() const noexcept { return eigenbasis_; }
+
+  /// The surface at (s, t) in [0, 1]^2 over control points \p ring (in ring
+  /// order). At (0, 0) itself the position is the limit of the corner and
+  /// the derivatives are zero: the parametric derivatives there are 0 or
+  /// unbounded depending on N (the normal comes from the tangent masks).
+  /// \param ring size() control points.
+  /// \param s the first parameter.
+  /// \param t the second parameter.
+  /// \return position and derivatives with respect to (s, t).
+  PatchPoint evaluate(const std::vector<Vec3>& ring, double s, double t) const;
+
+ private:
+  int valence_ = 0;
+  Eigen::MatrixXd A_;                    // K x K
+  std::array<Eigen::MatrixXd, 3> child_;  // 16 x K: children at (1/2, 0), (1/2, 1/2), (0, 1/2)
+  std::vector<int> signature_;
+  std::vector<Vec3> layout_;
+  bool eigenbasis_ = false;
+  Eigen::VectorXcd eigenvalues_;              // Lambda
+  std::array<Eigen::MatrixXcd, 3> child_V_;  // A_k V
+  Eigen::MatrixXcd V_inverse_;               // V^-1
+  Eigen::VectorXd limit_row_;                // the limit of the corner: row of A^infinity
+};
+
+}  // namespace subdiv

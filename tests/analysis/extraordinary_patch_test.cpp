@@ -1,0 +1,162 @@
+// Exact evaluation at an extraordinary Catmull-Clark corner
+// (src/analysis/extraordinary_patch.h): at valence 4 it is the bicubic
+// B-spline; at valences 3..12 it equals the scheme's own refinement followed
+// by the closed-form limit masks at every level-3 vertex of the face; its
+// derivatives match finite differences.
+#include "analysis/extraordinary_patch.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "analysis/patch_basis.h"
+#include "subdiv/analysis/limit.h"
+#include "subdiv/core/error.h"
+#include "subdiv/refine/configuration.h"
+#include "subdiv/refine/refine.h"
+#include "subdiv/refine/ring_mesh.h"
+#include "subdiv/rules/catmull_clark.h"
+
+namespace subdiv {
+namespace {
+
+/// The ring mesh the patch's model is made on, with random heights, and the
+/// model face's ring in the patch's order.
+struct Model {
+  RingMesh ring;
+  std::vector<Index> face_ring_vertices;
+  Vec3 u, v;  // layout of the face's next and previous corners (the centre is at the origin)
+};
+
+Model model(int valence, std::mt19937& random) {
+  Configuration configuration;
+  configuration.kind = Configuration::Kind::interior;
+  configuration.k = valence;
+  Model m{ring_mesh(SplitRule::quad, configuration, 4), {}, {}, {}};
+  std::uniform_real_distribution<double> height(-0.5, 0.5);
+  for (Vec3& p : m.ring.mesh.positions) p.z = height(random);
+  const MeshTopology topology(m.ring.mesh);
+  const Index corner = topology.vertex_corners(m.ring.centre)[0];
+  m.face_ring_vertices = face_ring(topology, corner)->vertices;
+  const auto layout = [&](Index c) {
+    Vec3 p = m.ring.mesh.positions[static_cast<std::size_t>(topology.corner_vertex(c))];
+    p.z = 0;
+    return p;
+  };
+  m.u = layout(topology.corner_next(corner));
+  m.v = layout(topology.corner_prev(corner));
+  return m;
+}
+
+std::vector<Vec3> control_points(const Model& m) {
+  std::vector<Vec3> points;
+  for (const Index v : m.face_ring_vertices) points.push_back(m.ring.mesh.positions[static_cast<std::size_t>(v)]);
+  return points;
+}
+
+TEST(ExtraordinaryPatch, ValenceFourIsTheBicubicSpline) {
+  std::mt19937 random(5);
+  const ExtraordinaryPatch patch(4);
+  const Model m = model(4, random);
+  const std::vector<Vec3> ring = control_points(m);
+  // The 16 points by their grid coordinates in the face's frame.
+  std::array<Vec3, 16> grid{};
+  int found = 0;
+  for (const Vec3& p : ring) {
+    const double i = dot(p, m.u) / dot(m.u, m.u), j = dot(p, m.v) / dot(m.v, m.v);
+    const auto index = static_cast<std::size_t>((std::lround(i) + 1) + 4 * (std::lround(j) + 1));
+    grid[index] = p;
+    ++found;
+  }
+  ASSERT_EQ(found, 16);
+  // Tolerances relative to the control points' extent.
+  double extent = 0.0;
+  for (const Vec3& p : ring) extent = std::max(extent, norm(p));
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<std::array<double, 2>> parameters = {{1.0, 1.0}, {0.5, 0.0}, {1e-9, 3e-9}, {0.3, 0.0}, {1e-300, 0.0}};
+  for (int i = 0; i < 20; ++i) parameters.push_back({unit(random), unit(random)});
+  for (const auto& [s, t] : parameters) {
+    const PatchPoint p = patch.evaluate(ring, s, t);
+    const PatchWeights<16> w = bicubic_bspline_weights(s, t);
+    Vec3 position{}, du{}, dv{}, duu{}, duv{}, dvv{};
+    for (std::size_t k = 0; k < 16; ++k) {
+      position = position + w.value[k] * grid[k];
+      du = du + w.du[k] * grid[k];
+      dv = dv + w.dv[k] * grid[k];
+      duu = duu + w.duu[k] * grid[k];
+      duv = duv + w.duv[k] * grid[k];
+      dvv = dvv + w.dvv[k] * grid[k];
+    }
+    EXPECT_LT(norm(p.position - position), 1e-13 * extent) << "(" << s << ", " << t << ")";
+    EXPECT_LT(norm(p.du - du), 1e-12 * extent) << "(" << s << ", " << t << ")";
+    EXPECT_LT(norm(p.dv - dv), 1e-12 * extent) << "(" << s << ", " << t << ")";
+    EXPECT_LT(norm(p.duu - duu), 1e-11 * extent) << "(" << s << ", " << t << ")";
+    EXPECT_LT(norm(p.duv - duv), 1e-11 * extent) << "(" << s << ", " << t << ")";
+    EXPECT_LT(norm(p.dvv - dvv), 1e-11 * extent) << "(" << s << ", " << t << ")";
+  }
+}
+
+TEST(ExtraordinaryPatch, EqualsRefinementAndLimitMasks) {
+  std::mt19937 random(9);
+  const Scheme& scheme = catmull_clark_scheme();
+  for (int valence = 3; valence <= 12; ++valence) {
+    const ExtraordinaryPatch patch(valence);
+    EXPECT_TRUE(patch.uses_eigenbasis()) << "valence " << valence;
+    const Model m = model(valence, random);
+    const std::vector<Vec3> ring = control_points(m);
+    RefineOptions options;
+    options.levels = 3;
+    const PolygonMesh refined = refine(m.ring.mesh, scheme, options);
+    const LimitResult limit = limit_positions(refined, scheme);
+    // Within the face's sector the layout is linear, and a level-3 vertex
+    // sits at its parameter: layout p / 8 = s u + t v.
+    const std::vector<Vec3> layout = child_layout(SplitRule::quad, m.ring, 3);
+    const double uu = dot(m.u, m.u), uv = dot(m.u, m.v), vv = dot(m.v, m.v);
+    int inside = 0;
+    for (std::size_t i = 0; i < layout.size(); ++i) {
+      const Vec3 p{layout[i].x, layout[i].y, 0.0};
+      const double pu = dot(p, m.u), pv = dot(p, m.v), det = uu * vv - uv * uv;
+      const double s = (pu * vv - pv * uv) / det, t = (pv * uu - pu * uv) / det;
+      if (s < -1e-9 || t < -1e-9 || s > 1 + 1e-9 || t > 1 + 1e-9) continue;
+      ++inside;
+      const double ds = std::round(s * 8) / 8, dt = std::round(t * 8) / 8;
+      ASSERT_NEAR(s, ds, 1e-9);
+      ASSERT_NEAR(t, dt, 1e-9);
+      const PatchPoint q = patch.evaluate(ring, ds, dt);
+      EXPECT_LT(norm(q.position - limit.positions[i]), 1e-12) << "valence " << valence << " at (" << ds << ", " << dt << ")";
+    }
+    EXPECT_EQ(inside, 81) << "valence " << valence;
+  }
+}
+
+TEST(ExtraordinaryPatch, DerivativesMatchFiniteDifferences) {
+  std::mt19937 random(3);
+  for (const int valence : {3, 5, 8}) {
+    const ExtraordinaryPatch patch(valence);
+    const std::vector<Vec3> ring = control_points(model(valence, random));
+    for (const auto& [s, t] : std::vector<std::array<double, 2>>{{0.7, 0.2}, {0.3, 0.6}, {0.05, 0.02}, {0.9, 0.9}}) {
+      const double h = 1e-6 * std::max(s, t);
+      const PatchPoint p = patch.evaluate(ring, s, t);
+      const PatchPoint ps = patch.evaluate(ring, s + h, t), ms = patch.evaluate(ring, s - h, t);
+      const PatchPoint pt = patch.evaluate(ring, s, t + h), mt = patch.evaluate(ring, s, t - h);
+      const double scale = norm(p.du) + norm(p.dv);
+      EXPECT_LT(norm(p.du - (1.0 / (2 * h)) * (ps.position - ms.position)), 1e-6 * scale) << valence << " (" << s << ", " << t << ")";
+      EXPECT_LT(norm(p.dv - (1.0 / (2 * h)) * (pt.position - mt.position)), 1e-6 * scale) << valence << " (" << s << ", " << t << ")";
+      const double second = norm(p.duu) + norm(p.duv) + norm(p.dvv);
+      EXPECT_LT(norm(p.duu - (1.0 / (2 * h)) * (ps.du - ms.du)), 1e-5 * second) << valence << " (" << s << ", " << t << ")";
+      EXPECT_LT(norm(p.duv - (1.0 / (2 * h)) * (pt.du - mt.du)), 1e-5 * second) << valence << " (" << s << ", " << t << ")";
+      EXPECT_LT(norm(p.dvv - (1.0 / (2 * h)) * (pt.dv - mt.dv)), 1e-5 * second) << valence << " (" << s << ", " << t << ")";
+    }
+  }
+}
+
+TEST(ExtraordinaryPatch, RefusesBadInput) {
+  EXPECT_THROW(ExtraordinaryPatch(2), InvalidInputError);
+  const ExtraordinaryPatch patch(5);
+  EXPECT_EQ(patch.size(), 18);
+  EXPECT_THROW((void)patch.evaluate(std::vector<Vec3>(17), 0.5, 0.5), InvalidInputError);
+}
+
+}  // namespace
+}  // namespace subdiv
