@@ -16,6 +16,7 @@
 #include "subdiv/refine/refine.h"
 #include "subdiv/refine/ring_mesh.h"
 #include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/loop.h"
 #include "subdiv/topology/split.h"
 
 namespace subdiv {
@@ -81,18 +82,46 @@ Eigen::MatrixXd rows_over_ring(const StencilTable& table, const std::vector<Inde
 
 }  // namespace
 
-ExtraordinaryPatch::ExtraordinaryPatch(int valence) : valence_(valence) {
+namespace {
+
+/// A regular child's frame in F's parameters: its origin and its axes'
+/// steps (the child's u runs along s, its v along t).
+struct ChildFrame {
+  std::array<double, 2> origin;
+  std::array<double, 2> axis;
+};
+// Quad split: the children at (1/2, 0), (1/2, 1/2) and (0, 1/2).
+constexpr std::array<ChildFrame, 3> kQuadChildren = {{{{0.5, 0.0}, {0.5, 0.5}}, {{0.5, 0.5}, {0.5, 0.5}},
+                                                      {{0.0, 0.5}, {0.5, 0.5}}}};
+// Triangle split: the children at the corners (1, 0) and (0, 1), and the
+// middle one, turned a half turn.
+constexpr std::array<ChildFrame, 3> kTriangleChildren = {{{{0.5, 0.0}, {0.5, 0.5}}, {{0.0, 0.5}, {0.5, 0.5}},
+                                                          {{0.5, 0.5}, {-0.5, -0.5}}}};
+
+}  // namespace
+
+ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(split), valence_(valence) {
+  if (split != SplitRule::quad && split != SplitRule::triangle) {
+    throw InvalidInputError("extraordinary patch: only the quad and triangle splits have one");
+  }
   if (valence < 3) throw InvalidInputError("extraordinary patch: valence " + std::to_string(valence) + " is below 3");
+  if (split == SplitRule::triangle && valence == 3) {
+    // The middle child's corners are regular, but the triangles touching
+    // them wrap around the valence-3 corner: its ring is no lattice, and
+    // its patch needs one more level.
+    throw InvalidInputError("extraordinary patch: Loop at valence 3 needs a two-level patch, not built yet");
+  }
+  const bool quads = split == SplitRule::quad;
   Configuration configuration;
   configuration.kind = Configuration::Kind::interior;
   configuration.k = valence;
   // Four rings keep the ring mesh's boundary rules away from every row read.
-  const RingMesh model = ring_mesh(SplitRule::quad, configuration, 4);
+  const RingMesh model = ring_mesh(split, configuration, 4);
   const MeshTopology parent(model.mesh);
   const Index corner = parent.vertex_corners(model.centre)[0];
   const std::optional<FaceRing> ring = face_ring(parent, corner);
-  if (!ring || ring->vertices.size() != static_cast<std::size_t>(2 * valence + 8)) {
-    inconsistent(valence, "the model face's ring is not 2N + 8 vertices");
+  if (!ring || ring->vertices.size() != static_cast<std::size_t>(quads ? 2 * valence + 8 : valence + 6)) {
+    inconsistent(valence, "the model face's ring has another size than 2N + 8 (quads) or N + 6 (triangles)");
   }
   signature_ = ring->signature;
   for (const Index v : ring->vertices) layout_.push_back(model.mesh.positions[static_cast<std::size_t>(v)]);
@@ -103,47 +132,56 @@ ExtraordinaryPatch::ExtraordinaryPatch(int valence) : valence_(valence) {
   RefineOptions one_step;
   one_step.levels = 1;
   one_step.regular_grids = false;
-  const StencilTable table = refine_stencil_table(model.mesh, catmull_clark_scheme(), one_step);
+  const StencilTable table = refine_stencil_table(model.mesh, quads ? catmull_clark_scheme() : loop_scheme(), one_step);
   PolygonMesh child_mesh;
-  const SplitMap map = split_topology(model.mesh, parent, SplitRule::quad, child_mesh);
+  const SplitMap map = split_topology(model.mesh, parent, split, child_mesh);
   const MeshTopology child(child_mesh);
 
   // The parameter of each child vertex of F in F's frame.
-  constexpr std::array<std::array<double, 2>, 4> kCorner = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  constexpr std::array<std::array<double, 2>, 4> kQuadCorner = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  constexpr std::array<std::array<double, 2>, 4> kTriangleCorner = {{{0, 0}, {1, 0}, {0, 1}, {0, 0}}};
+  const auto& corner_parameter = quads ? kQuadCorner : kTriangleCorner;
+  const std::size_t corners = quads ? 4 : 3;
   std::vector<std::array<double, 2>> parameter(static_cast<std::size_t>(child.vertex_count()), {-1.0, -1.0});
   Index c = corner;
-  for (std::size_t k = 0; k < 4; ++k, c = parent.corner_next(c)) {
-    const auto& [s, t] = kCorner[k];
-    const auto& [ns, nt] = kCorner[(k + 1) % 4];
+  for (std::size_t k = 0; k < corners; ++k, c = parent.corner_next(c)) {
+    const auto& [s, t] = corner_parameter[k];
+    const auto& [ns, nt] = corner_parameter[(k + 1) % corners];
     parameter[static_cast<std::size_t>(map.vertex_point(parent.corner_vertex(c)))] = {s, t};
     parameter[static_cast<std::size_t>(map.edge_point(parent.corner_edge(c)))] = {(s + ns) / 2, (t + nt) / 2};
   }
-  parameter[static_cast<std::size_t>(map.face_point(parent.corner_face(corner)))] = {0.5, 0.5};
-  const auto corner_at = [&](Index child_face, double s, double t) {
-    for (Index k = 0; k < child.face_size(child_face); ++k) {
-      const Index cc = child.face_first_corner(child_face) + k;
-      const auto& p = parameter[static_cast<std::size_t>(child.corner_vertex(cc))];
-      if (p[0] == s && p[1] == t) {
-        // The frame must be F's: the next corner half a step along s.
+  if (quads) parameter[static_cast<std::size_t>(map.face_point(parent.corner_face(corner)))] = {0.5, 0.5};
+  // The corner of a child of F at parameter `frame.origin` whose next corner
+  // lies along the frame's u axis.
+  const auto corner_at = [&](const ChildFrame& frame) {
+    const auto [first, last] = child_faces(parent, split, parent.corner_face(corner));
+    for (Index f = first; f < last; ++f) {
+      for (Index k = 0; k < child.face_size(f); ++k) {
+        const Index cc = child.face_first_corner(f) + k;
+        const auto& p = parameter[static_cast<std::size_t>(child.corner_vertex(cc))];
         const auto& q = parameter[static_cast<std::size_t>(child.corner_vertex(child.corner_next(cc)))];
-        if (q[0] != s + 0.5 || q[1] != t) inconsistent(valence_, "a child face is not oriented as its parent");
-        return cc;
+        if (p == frame.origin && q[0] == frame.origin[0] + frame.axis[0] && q[1] == frame.origin[1]) return cc;
       }
     }
-    inconsistent(valence_, "a child face lacks its corner");
+    inconsistent(valence_, "no child face has the expected frame");
   };
-  // The quad split's child face at parent corner c is face c.
-  const Index centre_child = corner_at(corner, 0.0, 0.0);
+  const Index centre_child = corner_at({{0.0, 0.0}, {0.5, 0.5}});
   const std::optional<FaceRing> child_ring = face_ring(child, centre_child);
   if (!child_ring || child_ring->signature != signature_) inconsistent(valence_, "the centre child's ring differs");
   A_ = rows_over_ring(table, child_ring->vertices, column_of, size, valence_);
-  constexpr std::array<std::array<double, 2>, 3> kChildOrigin = {{{0.5, 0.0}, {0.5, 0.5}, {0.0, 0.5}}};
-  Index parent_corner = parent.corner_next(corner);
-  for (std::size_t k = 0; k < 3; ++k, parent_corner = parent.corner_next(parent_corner)) {
-    const Index origin = corner_at(parent_corner, kChildOrigin[k][0], kChildOrigin[k][1]);
-    const auto points = bicubic_patch_points(child, origin);
-    if (!points) inconsistent(valence_, "a regular child has no bicubic patch");
-    child_[k] = rows_over_ring(table, std::vector<Index>(points->begin(), points->end()), column_of, size, valence_);
+  const auto& frames = quads ? kQuadChildren : kTriangleChildren;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Index origin = corner_at(frames[k]);
+    std::vector<Index> rows;
+    if (quads) {
+      const auto points = bicubic_patch_points(child, origin);
+      if (points) rows.assign(points->begin(), points->end());
+    } else {
+      const auto points = box_spline_patch_points(child, origin);
+      if (points) rows.assign(points->begin(), points->end());
+    }
+    if (rows.empty()) inconsistent(valence_, "a regular child has no regular patch");
+    children_[k] = {rows_over_ring(table, rows, column_of, size, valence_), frames[k].origin, frames[k].axis};
   }
 
   // The corner's limit: row 0 (the centre) of A^256, by repeated squaring;
@@ -164,10 +202,15 @@ ExtraordinaryPatch::ExtraordinaryPatch(int valence) : valence_(valence) {
         eigenbasis_ = true;
         eigenvalues_ = solver.eigenvalues();
         V_inverse_ = V_inverse;
-        for (std::size_t k = 0; k < 3; ++k) child_V_[k] = child_[k].cast<std::complex<double>>() * V;
+        for (std::size_t k = 0; k < 3; ++k) child_V_[k] = children_[k].rows.cast<std::complex<double>>() * V;
       }
     }
   }
+}
+
+std::size_t ExtraordinaryPatch::child_holding(double s, double t) const noexcept {
+  if (split_ == SplitRule::quad) return s >= 0.5 ? (t >= 0.5 ? 1 : 0) : 2;
+  return s >= 0.5 ? 0 : (t >= 0.5 ? 1 : 2);
 }
 
 PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s, double t) const {
@@ -186,26 +229,38 @@ PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s,
     point.position = to_vec(limit_row_.transpose() * control);
     return point;
   }
-  // Level n: the largest whose centre child still holds (s, t) at its
-  // edge or outside; doubling is exact in floating point.
+  // Level n: the deepest centre child that holds (s, t) outside its own
+  // centre child; doubling is exact in floating point.
+  const bool quads = split_ == SplitRule::quad;
   int n = 0;
-  while (std::max(s, t) < 0.5) {
+  while ((quads ? std::max(s, t) : s + t) < 0.5) {
     s *= 2.0;
     t *= 2.0;
     ++n;
   }
-  const std::size_t k = s >= 0.5 ? (t >= 0.5 ? 1 : 0) : 2;
-  constexpr std::array<std::array<double, 2>, 3> kChildOrigin = {{{0.5, 0.0}, {0.5, 0.5}, {0.0, 0.5}}};
-  const PatchWeights<16> b = bicubic_bspline_weights(2.0 * (s - kChildOrigin[k][0]), 2.0 * (t - kChildOrigin[k][1]));
+  const std::size_t k = child_holding(s, t);
+  const Child& child = children_[k];
+  const double u = (s - child.origin[0]) / child.axis[0], v = (t - child.origin[1]) / child.axis[1];
+  std::array<std::vector<double>, 6> weights;
+  if (quads) {
+    const PatchWeights<16> b = bicubic_bspline_weights(u, v);
+    weights = {{{b.value.begin(), b.value.end()}, {b.du.begin(), b.du.end()}, {b.dv.begin(), b.dv.end()},
+                {b.duu.begin(), b.duu.end()}, {b.duv.begin(), b.duv.end()}, {b.dvv.begin(), b.dvv.end()}}};
+  } else {
+    const PatchWeights<12> b = box_spline_weights(u, v);
+    weights = {{{b.value.begin(), b.value.end()}, {b.du.begin(), b.du.end()}, {b.dv.begin(), b.dv.end()},
+                {b.duu.begin(), b.duu.end()}, {b.duv.begin(), b.duv.end()}, {b.dvv.begin(), b.dvv.end()}}};
+  }
   // The weights of each family over the ring, then the family's point. A
   // derivative of order d is 2^d (2^d lambda)^n in the eigenbasis: scaled
   // there, never 2^(n d) apart, so nothing overflows. Components that a
   // derivative annihilates analytically (the constant one, eigenvalue 1;
   // any whose coefficient is rounding noise, below 1e-13 of the family's
   // largest) are dropped: near the corner they would be rounding errors
-  // multiplied by 2^(n d).
-  const auto family = [&](const std::array<double, 16>& weights, int order) {
-    const Eigen::Map<const Eigen::Matrix<double, 1, 16>> row(weights.data());
+  // multiplied by 2^(n d). `chain` is the child frame's factor (1 / axis
+  // steps) for the family's derivatives.
+  const auto family = [&](const std::vector<double>& family_weights, int order, double chain) {
+    const Eigen::Map<const Eigen::RowVectorXd> row(family_weights.data(), static_cast<Eigen::Index>(family_weights.size()));
     const double growth = std::ldexp(1.0, order);
     Eigen::RowVectorXd over_ring;
     if (eigenbasis_) {
@@ -214,22 +269,22 @@ PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s,
       for (Eigen::Index i = 0; i < size; ++i) {
         const bool annihilated = order > 0 && (std::abs(eigenvalues_(i) - 1.0) < 1e-12 ||
                                                std::abs(in_basis(i)) < 1e-13 * largest);
-        in_basis(i) = annihilated ? 0.0 : in_basis(i) * growth * std::pow(growth * eigenvalues_(i), n);
+        in_basis(i) = annihilated ? 0.0 : in_basis(i) * std::pow(growth * eigenvalues_(i), n);
       }
       over_ring = (in_basis * V_inverse_).real();
     } else {
-      over_ring = row * child_[k];
+      over_ring = row * child.rows;
       for (int i = 0; i < n; ++i) over_ring = growth * (over_ring * A_);
-      over_ring *= growth;
     }
-    return to_vec(over_ring * control);
+    return to_vec(chain * (over_ring * control));
   };
-  point.position = family(b.value, 0);
-  point.du = family(b.du, 1);
-  point.dv = family(b.dv, 1);
-  point.duu = family(b.duu, 2);
-  point.duv = family(b.duv, 2);
-  point.dvv = family(b.dvv, 2);
+  const double cu = 1.0 / child.axis[0], cv = 1.0 / child.axis[1];
+  point.position = family(weights[0], 0, 1.0);
+  point.du = family(weights[1], 1, cu);
+  point.dv = family(weights[2], 1, cv);
+  point.duu = family(weights[3], 2, cu * cu);
+  point.duv = family(weights[4], 2, cu * cv);
+  point.dvv = family(weights[5], 2, cv * cv);
   return point;
 }
 

@@ -1,21 +1,26 @@
 #pragma once
 /// \file
-/// Exact evaluation of a Catmull-Clark face with one extraordinary corner
-/// (Stam, "Exact evaluation of Catmull-Clark subdivision surfaces at
-/// arbitrary parameter values", SIGGRAPH 1998), with every matrix read off
-/// the project's own refinement instead of published tables.
+/// Exact evaluation of a Catmull-Clark or Loop face with one extraordinary
+/// corner (Stam, "Exact evaluation of Catmull-Clark subdivision surfaces at
+/// arbitrary parameter values" and "Evaluation of Loop subdivision
+/// surfaces", SIGGRAPH 1998), with every matrix read off the project's own
+/// refinement instead of published tables.
 ///
 /// The model is the ring mesh of an interior vertex of valence N; face F is
 /// the first face at its centre, with the centre at parameter (0, 0), the
 /// next corner at (1, 0) and the previous one at (0, 1). Its face ring (the
-/// vertices of the faces touching F, 2N + 8 of them, in face_ring() order) is
-/// mapped one step down onto the face ring of F's child at the centre by A,
-/// and onto the 16 control points of each of the three other children by
-/// A_k; both come from refine_stencil_table() of the ring mesh. A point at
-/// (s, t) with max(s, t) in [2^-(n+1), 2^-n) lies in child k of level n:
-/// its value is b(s', t') A_k A^n C with A^n = V Lambda^n V^-1 from the
-/// eigen-decomposition of A (the powers are taken by repeated products
-/// where A is not diagonalizable to working accuracy).
+/// vertices of the faces touching F: 2N + 8 for a quad, N + 6 for a
+/// triangle, in face_ring() order) is mapped one step down onto the face
+/// ring of F's child at the centre by A, and onto the regular patch points
+/// (16 or 12) of each other child by A_k; both come from
+/// refine_stencil_table() of the ring mesh. A point whose parameter lies in
+/// F's level-n centre child but not in its level-(n+1) one (max(s, t), or
+/// s + t, in [2^-(n+1), 2^-n)) lies in a regular child k of level n: its
+/// value is b(s', t') A_k A^n C with A^n = V Lambda^n V^-1 from the
+/// eigen-decomposition of A (the powers are taken by repeated products where
+/// A is not diagonalizable to working accuracy). The quad split's children
+/// keep F's frame at half scale; the triangle split's middle child is F's
+/// frame turned a half turn.
 #include <Eigen/Core>
 #include <array>
 #include <optional>
@@ -23,6 +28,7 @@
 
 #include "subdiv/core/types.h"
 #include "subdiv/mesh/topology.h"
+#include "subdiv/topology/split.h"
 
 namespace subdiv {
 
@@ -51,19 +57,25 @@ struct PatchPoint {
   Vec3 position, du, dv, duu, duv, dvv;
 };
 
-/// Catmull-Clark's patch at an extraordinary corner of valence N, read off
-/// the scheme's refinement of the ring mesh (see the file comment).
+/// The patch at an extraordinary corner of valence N, read off the scheme's
+/// refinement of the ring mesh (see the file comment): Catmull-Clark for the
+/// quad split, Loop for the triangle split.
 class ExtraordinaryPatch {
  public:
-  /// Builds the model for valence \p valence (>= 3).
-  /// \throws InvalidInputError for a valence below 3.
-  /// \throws Error where the ring mesh's refinement does not have the
-  ///   expected structure (an internal inconsistency).
-  explicit ExtraordinaryPatch(int valence);
+  /// Builds the model for \p split at valence \p valence (>= 3).
+  /// \throws InvalidInputError for a valence below 3, the triangle split at
+  ///   valence 3 (the triangles touching its middle child wrap around the
+  ///   corner, so that child is no regular patch until one level further),
+  ///   or a split other than the quad and triangle splits.
+  /// \throws std::logic_error where the ring mesh's refinement does not have
+  ///   the expected structure (an internal inconsistency).
+  ExtraordinaryPatch(SplitRule split, int valence);
 
+  /// \return the split (quad: Catmull-Clark, triangle: Loop).
+  SplitRule split() const noexcept { return split_; }
   /// \return the valence N.
   int valence() const noexcept { return valence_; }
-  /// \return the face-ring size, 2N + 8.
+  /// \return the face-ring size: 2N + 8 (quad split), N + 6 (triangle split).
   int size() const noexcept { return static_cast<int>(A_.rows()); }
   /// \return the signature of the model face's ring: a mesh face whose ring
   ///   has it (from the extraordinary corner) is evaluated by this patch.
@@ -76,8 +88,8 @@ class ExtraordinaryPatch {
   /// \return whether A^n is taken through its eigenbasis (else by products).
   bool uses_eigenbasis() const noexcept { return eigenbasis_; }
 
-  /// The surface at (s, t) in [0, 1]^2 over control points \p ring (in ring
-  /// order). At (0, 0) itself the position is the limit of the corner and
+  /// The surface at (s, t) in F (the unit square, or the triangle s, t >= 0,
+  /// s + t <= 1) over control points \p ring (in ring order). At (0, 0) itself the position is the limit of the corner and
   /// the derivatives are zero: the parametric derivatives there are 0 or
   /// unbounded depending on N (the normal comes from the tangent masks).
   /// \param ring size() control points.
@@ -87,14 +99,24 @@ class ExtraordinaryPatch {
   PatchPoint evaluate(const std::vector<Vec3>& ring, double s, double t) const;
 
  private:
+  /// A regular child: its patch's rows over the ring, and its frame (its
+  /// parameter (u, v) is F's origin + (u axis_s, v axis_t)).
+  struct Child {
+    Eigen::MatrixXd rows;  // patch points x K
+    std::array<double, 2> origin{};
+    std::array<double, 2> axis{};
+  };
+  std::size_t child_holding(double s, double t) const noexcept;
+
+  SplitRule split_ = SplitRule::quad;
   int valence_ = 0;
-  Eigen::MatrixXd A_;                    // K x K
-  std::array<Eigen::MatrixXd, 3> child_;  // 16 x K: children at (1/2, 0), (1/2, 1/2), (0, 1/2)
+  Eigen::MatrixXd A_;              // K x K
+  std::array<Child, 3> children_;
   std::vector<int> signature_;
   std::vector<Vec3> layout_;
   bool eigenbasis_ = false;
   Eigen::VectorXcd eigenvalues_;              // Lambda
-  std::array<Eigen::MatrixXcd, 3> child_V_;  // A_k V
+  std::array<Eigen::MatrixXcd, 3> child_V_;  // A_k V, per child
   Eigen::MatrixXcd V_inverse_;               // V^-1
   Eigen::VectorXd limit_row_;                // the limit of the corner: row of A^infinity
 };

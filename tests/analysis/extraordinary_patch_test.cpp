@@ -1,8 +1,8 @@
 // Exact evaluation at an extraordinary Catmull-Clark corner
-// (src/analysis/extraordinary_patch.h): at valence 4 it is the bicubic
-// B-spline; at valences 3..12 it equals the scheme's own refinement followed
-// by the closed-form limit masks at every level-3 vertex of the face; its
-// derivatives match finite differences.
+// and Loop corner (src/analysis/extraordinary_patch.h): at valence 4 the
+// Catmull-Clark patch is the bicubic B-spline; at valences 3..12 (Loop: 4..12) both equal
+// the schemes' own refinement followed by the closed-form limit masks at
+// every level-3 vertex of the face; derivatives match finite differences.
 #include "analysis/extraordinary_patch.h"
 
 #include <gtest/gtest.h>
@@ -17,6 +17,7 @@
 #include "subdiv/refine/refine.h"
 #include "subdiv/refine/ring_mesh.h"
 #include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/loop.h"
 
 namespace subdiv {
 namespace {
@@ -29,11 +30,11 @@ struct Model {
   Vec3 u, v;  // layout of the face's next and previous corners (the centre is at the origin)
 };
 
-Model model(int valence, std::mt19937& random) {
+Model model(SplitRule split, int valence, std::mt19937& random) {
   Configuration configuration;
   configuration.kind = Configuration::Kind::interior;
   configuration.k = valence;
-  Model m{ring_mesh(SplitRule::quad, configuration, 4), {}, {}, {}};
+  Model m{ring_mesh(split, configuration, 4), {}, {}, {}};
   std::uniform_real_distribution<double> height(-0.5, 0.5);
   for (Vec3& p : m.ring.mesh.positions) p.z = height(random);
   const MeshTopology topology(m.ring.mesh);
@@ -57,8 +58,8 @@ std::vector<Vec3> control_points(const Model& m) {
 
 TEST(ExtraordinaryPatch, ValenceFourIsTheBicubicSpline) {
   std::mt19937 random(5);
-  const ExtraordinaryPatch patch(4);
-  const Model m = model(4, random);
+  const ExtraordinaryPatch patch(SplitRule::quad, 4);
+  const Model m = model(SplitRule::quad, 4, random);
   const std::vector<Vec3> ring = control_points(m);
   // The 16 points by their grid coordinates in the face's frame.
   std::array<Vec3, 16> grid{};
@@ -97,13 +98,15 @@ TEST(ExtraordinaryPatch, ValenceFourIsTheBicubicSpline) {
   }
 }
 
-TEST(ExtraordinaryPatch, EqualsRefinementAndLimitMasks) {
+/// At valences 3..12 the patch equals the scheme's refinement followed by
+/// its closed-form limit masks at every level-3 vertex of the face.
+void expect_patch_equals_refined_limits(SplitRule split, const Scheme& scheme) {
   std::mt19937 random(9);
-  const Scheme& scheme = catmull_clark_scheme();
-  for (int valence = 3; valence <= 12; ++valence) {
-    const ExtraordinaryPatch patch(valence);
+  const bool quads = split == SplitRule::quad;
+  for (int valence = quads ? 3 : 4; valence <= 12; ++valence) {
+    const ExtraordinaryPatch patch(split, valence);
     EXPECT_TRUE(patch.uses_eigenbasis()) << "valence " << valence;
-    const Model m = model(valence, random);
+    const Model m = model(split, valence, random);
     const std::vector<Vec3> ring = control_points(m);
     RefineOptions options;
     options.levels = 3;
@@ -111,14 +114,14 @@ TEST(ExtraordinaryPatch, EqualsRefinementAndLimitMasks) {
     const LimitResult limit = limit_positions(refined, scheme);
     // Within the face's sector the layout is linear, and a level-3 vertex
     // sits at its parameter: layout p / 8 = s u + t v.
-    const std::vector<Vec3> layout = child_layout(SplitRule::quad, m.ring, 3);
+    const std::vector<Vec3> layout = child_layout(split, m.ring, 3);
     const double uu = dot(m.u, m.u), uv = dot(m.u, m.v), vv = dot(m.v, m.v);
     int inside = 0;
     for (std::size_t i = 0; i < layout.size(); ++i) {
       const Vec3 p{layout[i].x, layout[i].y, 0.0};
       const double pu = dot(p, m.u), pv = dot(p, m.v), det = uu * vv - uv * uv;
       const double s = (pu * vv - pv * uv) / det, t = (pv * uu - pu * uv) / det;
-      if (s < -1e-9 || t < -1e-9 || s > 1 + 1e-9 || t > 1 + 1e-9) continue;
+      if (s < -1e-9 || t < -1e-9 || (quads ? std::max(s, t) : s + t) > 1 + 1e-9) continue;
       ++inside;
       const double ds = std::round(s * 8) / 8, dt = std::round(t * 8) / 8;
       ASSERT_NEAR(s, ds, 1e-9);
@@ -126,16 +129,28 @@ TEST(ExtraordinaryPatch, EqualsRefinementAndLimitMasks) {
       const PatchPoint q = patch.evaluate(ring, ds, dt);
       EXPECT_LT(norm(q.position - limit.positions[i]), 1e-12) << "valence " << valence << " at (" << ds << ", " << dt << ")";
     }
-    EXPECT_EQ(inside, 81) << "valence " << valence;
+    // The level-3 grid of the face: 9 x 9 points, or 9 + 8 + ... + 1 = 45.
+    EXPECT_EQ(inside, quads ? 81 : 45) << "valence " << valence;
   }
+}
+
+TEST(ExtraordinaryPatch, CatmullClarkEqualsRefinementAndLimitMasks) {
+  expect_patch_equals_refined_limits(SplitRule::quad, catmull_clark_scheme());
+}
+
+TEST(ExtraordinaryPatch, LoopEqualsRefinementAndLimitMasks) {
+  expect_patch_equals_refined_limits(SplitRule::triangle, loop_scheme());
 }
 
 TEST(ExtraordinaryPatch, DerivativesMatchFiniteDifferences) {
   std::mt19937 random(3);
-  for (const int valence : {3, 5, 8}) {
-    const ExtraordinaryPatch patch(valence);
-    const std::vector<Vec3> ring = control_points(model(valence, random));
-    for (const auto& [s, t] : std::vector<std::array<double, 2>>{{0.7, 0.2}, {0.3, 0.6}, {0.05, 0.02}, {0.9, 0.9}}) {
+  for (const SplitRule split : {SplitRule::quad, SplitRule::triangle}) {
+  for (const int valence : {split == SplitRule::quad ? 3 : 4, 5, 8}) {
+    const ExtraordinaryPatch patch(split, valence);
+    const std::vector<Vec3> ring = control_points(model(split, valence, random));
+    // Points in each regular child, at several levels (the last two in the
+    // triangle's middle child).
+    for (const auto& [s, t] : std::vector<std::array<double, 2>>{{0.7, 0.2}, {0.2, 0.6}, {0.05, 0.02}, {0.3, 0.3}, {0.03, 0.04}}) {
       const double h = 1e-6 * std::max(s, t);
       const PatchPoint p = patch.evaluate(ring, s, t);
       const PatchPoint ps = patch.evaluate(ring, s + h, t), ms = patch.evaluate(ring, s - h, t);
@@ -149,11 +164,15 @@ TEST(ExtraordinaryPatch, DerivativesMatchFiniteDifferences) {
       EXPECT_LT(norm(p.dvv - (1.0 / (2 * h)) * (pt.dv - mt.dv)), 1e-5 * second) << valence << " (" << s << ", " << t << ")";
     }
   }
+  }
 }
 
 TEST(ExtraordinaryPatch, RefusesBadInput) {
-  EXPECT_THROW(ExtraordinaryPatch(2), InvalidInputError);
-  const ExtraordinaryPatch patch(5);
+  EXPECT_THROW(ExtraordinaryPatch(SplitRule::quad, 2), InvalidInputError);
+  EXPECT_THROW(ExtraordinaryPatch(SplitRule::dual, 5), InvalidInputError);
+  EXPECT_THROW(ExtraordinaryPatch(SplitRule::triangle, 3), InvalidInputError);
+  EXPECT_EQ(ExtraordinaryPatch(SplitRule::triangle, 5).size(), 11);
+  const ExtraordinaryPatch patch(SplitRule::quad, 5);
   EXPECT_EQ(patch.size(), 18);
   EXPECT_THROW((void)patch.evaluate(std::vector<Vec3>(17), 0.5, 0.5), InvalidInputError);
 }
