@@ -61,8 +61,9 @@ std::optional<std::array<Index, 16>> bicubic_patch_points(const MeshTopology& to
     }
     const auto beyond = points_beyond(topology, c);
     if (!beyond) return std::nullopt;
-    const auto [ox, oy] = kOrigin[k];
-    const auto [ux, uy] = kAxisU[k];
+    // Plain variables: clang 14 cannot capture structured bindings in a lambda.
+    const int ox = kOrigin[k][0], oy = kOrigin[k][1];
+    const int ux = kAxisU[k][0], uy = kAxisU[k][1];
     const int vx = -uy, vy = ux;  // v is u turned a quarter turn
     const auto place = [&](int a, int b, Index vertex) {
       points[static_cast<std::size_t>(grid_index(ox + a * ux + b * vx, oy + a * uy + b * vy))] = vertex;
