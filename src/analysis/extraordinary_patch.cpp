@@ -219,6 +219,12 @@ PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s,
     throw InvalidInputError("extraordinary patch: " + std::to_string(ring.size()) + " control points for a ring of " +
                             std::to_string(size));
   }
+  const bool quads = split_ == SplitRule::quad;
+  // Written so that NaN fails too.
+  if (!(s >= 0.0 && t >= 0.0 && (quads ? std::max(s, t) : s + t) <= 1.0)) {
+    throw InvalidInputError("extraordinary patch: (" + std::to_string(s) + ", " + std::to_string(t) +
+                            ") is outside the face");
+  }
   Eigen::MatrixXd control(size, 3);
   for (Eigen::Index i = 0; i < size; ++i) {
     for (int d = 0; d < 3; ++d) control(i, d) = ring[static_cast<std::size_t>(i)][d];
@@ -231,7 +237,6 @@ PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s,
   }
   // Level n: the deepest centre child that holds (s, t) outside its own
   // centre child; doubling is exact in floating point.
-  const bool quads = split_ == SplitRule::quad;
   int n = 0;
   while ((quads ? std::max(s, t) : s + t) < 0.5) {
     s *= 2.0;

@@ -89,13 +89,16 @@ class ExtraordinaryPatch {
   bool uses_eigenbasis() const noexcept { return eigenbasis_; }
 
   /// The surface at (s, t) in F (the unit square, or the triangle s, t >= 0,
-  /// s + t <= 1) over control points \p ring (in ring order). At (0, 0) itself the position is the limit of the corner and
-  /// the derivatives are zero: the parametric derivatives there are 0 or
-  /// unbounded depending on N (the normal comes from the tangent masks).
+  /// s + t <= 1) over control points \p ring (in ring order). At (0, 0)
+  /// itself the position is the limit of the corner and the derivatives are
+  /// zero: the parametric derivatives there are 0 or unbounded depending on
+  /// N (the normal comes from the tangent masks).
   /// \param ring size() control points.
   /// \param s the first parameter.
   /// \param t the second parameter.
   /// \return position and derivatives with respect to (s, t).
+  /// \throws InvalidInputError for a ring of another size, or (s, t) outside
+  ///   F (NaN included).
   PatchPoint evaluate(const std::vector<Vec3>& ring, double s, double t) const;
 
  private:

@@ -175,6 +175,11 @@ TEST(ExtraordinaryPatch, RefusesBadInput) {
   const ExtraordinaryPatch patch(SplitRule::quad, 5);
   EXPECT_EQ(patch.size(), 18);
   EXPECT_THROW((void)patch.evaluate(std::vector<Vec3>(17), 0.5, 0.5), InvalidInputError);
+  const std::vector<Vec3> ring(18);
+  for (const auto& [s, t] : std::vector<std::array<double, 2>>{{-1.0, -1.0}, {-0.1, 0.5}, {1.5, 0.2}, {std::nan(""), 0.5}}) {
+    EXPECT_THROW((void)patch.evaluate(ring, s, t), InvalidInputError) << s << ", " << t;
+  }
+  EXPECT_THROW((void)ExtraordinaryPatch(SplitRule::triangle, 5).evaluate(std::vector<Vec3>(11), 0.6, 0.6), InvalidInputError);
 }
 
 }  // namespace
