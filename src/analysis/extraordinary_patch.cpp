@@ -23,19 +23,17 @@ namespace subdiv {
 
 std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner) {
   FaceRing ring;
-  std::vector<Index> position_of;  // list position + 1 of each vertex seen; 0: not yet
-  position_of.assign(static_cast<std::size_t>(topology.vertex_count()), 0);
+  // Rings are a few dozen vertices: a linear search keeps the walk's cost
+  // independent of the mesh's size.
   const auto visit_face = [&](Index from) {
     const Index face = topology.corner_face(from);
     ring.signature.push_back(static_cast<int>(topology.face_size(face)));
     Index c = from;
     do {
-      const auto v = static_cast<std::size_t>(topology.corner_vertex(c));
-      if (position_of[v] == 0) {
-        ring.vertices.push_back(static_cast<Index>(v));
-        position_of[v] = static_cast<Index>(ring.vertices.size());
-      }
-      ring.signature.push_back(static_cast<int>(position_of[v]) - 1);
+      const Index v = topology.corner_vertex(c);
+      auto at = std::find(ring.vertices.begin(), ring.vertices.end(), v);
+      if (at == ring.vertices.end()) at = ring.vertices.insert(at, v);
+      ring.signature.push_back(static_cast<int>(at - ring.vertices.begin()));
       c = topology.corner_next(c);
     } while (c != from);
   };
