@@ -78,10 +78,6 @@ Eigen::MatrixXd rows_over_ring(const StencilTable& table, const std::vector<Inde
   return m;
 }
 
-}  // namespace
-
-namespace {
-
 /// A regular child's frame in F's parameters: its origin and its axes'
 /// steps (the child's u runs along s, its v along t).
 struct ChildFrame {
