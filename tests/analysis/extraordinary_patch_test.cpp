@@ -18,6 +18,7 @@
 #include "subdiv/refine/ring_mesh.h"
 #include "subdiv/rules/catmull_clark.h"
 #include "subdiv/rules/loop.h"
+#include "support/test_meshes.h"
 
 namespace subdiv {
 namespace {
@@ -165,6 +166,49 @@ TEST(ExtraordinaryPatch, DerivativesMatchFiniteDifferences) {
     }
   }
   }
+}
+
+/// A mesh refined once has one extraordinary corner per face at most. Each
+/// such face's ring, walked from that corner, must have the model's
+/// signature, and the patch over it must give the mesh's closed-form limits
+/// at the face's corners: (0, 0) at the extraordinary corner, (1, 0) at the
+/// next corner, (0, 1) at the previous one.
+void expect_mesh_faces_match_the_model(const PolygonMesh& control, SplitRule split, const Scheme& scheme, int valence) {
+  RefineOptions options;
+  options.levels = 1;
+  const PolygonMesh mesh = test::jittered(refine(control, scheme, options), 17);
+  const MeshTopology topology(mesh);
+  const LimitResult limit = limit_positions(mesh, scheme);
+  const ExtraordinaryPatch patch(split, valence);
+  int faces = 0;
+  for (Index c = 0; c < topology.corner_count(); ++c) {
+    if (topology.valence(topology.corner_vertex(c)) != valence) continue;
+    const std::optional<FaceRing> ring = face_ring(topology, c);
+    ASSERT_TRUE(ring.has_value()) << "corner " << c;
+    ASSERT_EQ(ring->signature, patch.signature()) << "corner " << c;
+    std::vector<Vec3> points;
+    for (const Index v : ring->vertices) points.push_back(mesh.positions[static_cast<std::size_t>(v)]);
+    const auto limit_at = [&](Index corner) { return limit.positions[static_cast<std::size_t>(topology.corner_vertex(corner))]; };
+    EXPECT_LT(norm(patch.evaluate(points, 0.0, 0.0).position - limit_at(c)), 1e-12) << "corner " << c;
+    EXPECT_LT(norm(patch.evaluate(points, 1.0, 0.0).position - limit_at(topology.corner_next(c))), 1e-12) << "corner " << c;
+    EXPECT_LT(norm(patch.evaluate(points, 0.0, 1.0).position - limit_at(topology.corner_prev(c))), 1e-12) << "corner " << c;
+    ++faces;
+  }
+  EXPECT_GT(faces, 0);
+}
+
+TEST(ExtraordinaryPatch, MeshFacesMatchTheModel) {
+  // The cube's corners have valence 3.
+  expect_mesh_faces_match_the_model(test::cube(), SplitRule::quad, catmull_clark_scheme(), 3);
+  // The octahedron's have valence 4 among Loop's regular 6.
+  PolygonMesh octahedron;
+  octahedron.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const std::array<Index, 3> face : std::vector<std::array<Index, 3>>{
+           {0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}) {
+    octahedron.face_indices.insert(octahedron.face_indices.end(), face.begin(), face.end());
+    octahedron.face_offsets.push_back(static_cast<Index>(octahedron.face_indices.size()));
+  }
+  expect_mesh_faces_match_the_model(octahedron, SplitRule::triangle, loop_scheme(), 4);
 }
 
 TEST(ExtraordinaryPatch, RefusesBadInput) {
