@@ -24,6 +24,12 @@ std::optional<std::array<Index, 3>> points_beyond(const MeshTopology& topology, 
                               topology.corner_vertex(topology.corner_next(topology.corner_next(diagonal)))};
 }
 
+/// An interior vertex with `faces` faces and as many edges.
+bool is_regular_interior(const MeshTopology& topology, Index v, Index faces) {
+  return topology.vertex_kind(v) == VertexKind::interior && topology.vertex_face_count(v) == faces &&
+         topology.valence(v) == faces;
+}
+
 constexpr Index grid_index(int i, int j) { return (i + 1) + 4 * (j + 1); }
 
 /// The index of lattice point (a, b) in kBoxSplineLattice, -1 if absent.
@@ -55,10 +61,7 @@ std::optional<std::array<Index, 16>> bicubic_patch_points(const MeshTopology& to
   Index c = corner;
   for (std::size_t k = 0; k < 4; ++k, c = topology.corner_next(c)) {
     const Index v = topology.corner_vertex(c);
-    if (topology.vertex_kind(v) != VertexKind::interior || topology.vertex_face_count(v) != 4 ||
-        topology.valence(v) != 4) {
-      return std::nullopt;
-    }
+    if (!is_regular_interior(topology, v, 4)) return std::nullopt;
     const auto beyond = points_beyond(topology, c);
     if (!beyond) return std::nullopt;
     // Plain variables: clang 14 cannot capture structured bindings in a lambda.
@@ -98,10 +101,7 @@ std::optional<std::array<Index, 12>> box_spline_patch_points(const MeshTopology&
   Index c = corner;
   for (std::size_t k = 0; k < 3; ++k, c = topology.corner_next(c)) {
     const Index v = topology.corner_vertex(c);
-    if (topology.vertex_kind(v) != VertexKind::interior || topology.vertex_face_count(v) != 6 ||
-        topology.valence(v) != 6) {
-      return std::nullopt;
-    }
+    if (!is_regular_interior(topology, v, 6)) return std::nullopt;
     const auto [ox, oy] = kOrigin[k];
     const auto [nx, ny] = kOrigin[(k + 1) % 3];
     const auto [px, py] = kOrigin[(k + 2) % 3];

@@ -8,12 +8,12 @@
 
 #include <array>
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "subdiv/analysis/limit.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/scheme.h"
+#include "support/test_meshes.h"
 
 namespace subdiv {
 namespace {
@@ -108,59 +108,31 @@ TEST(PatchBasis, DerivativesMatchFiniteDifferences) {
   }
 }
 
-/// A (2r + 1)^2 lattice of vertices (i, j, height) around the origin:
-/// quads, or each cell cut along (i + 1, j) - (i, j + 1) into two triangles.
-PolygonMesh lattice_mesh(int r, bool triangles, std::vector<double>& heights) {
-  PolygonMesh mesh;
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> height(-1.0, 1.0);
-  const int n = 2 * r + 1;
-  for (int j = -r; j <= r; ++j) {
-    for (int i = -r; i <= r; ++i) {
-      heights.push_back(height(random));
-      mesh.positions.push_back({static_cast<double>(i), static_cast<double>(j), heights.back()});
-    }
-  }
-  const auto at = [&](int i, int j) { return static_cast<Index>((j + r) * n + (i + r)); };
-  const auto add = [&](std::initializer_list<Index> face) {
-    mesh.face_indices.insert(mesh.face_indices.end(), face);
-    mesh.face_offsets.push_back(static_cast<Index>(mesh.face_indices.size()));
-  };
-  for (int j = -r; j < r; ++j) {
-    for (int i = -r; i < r; ++i) {
-      if (triangles) {
-        add({at(i, j), at(i + 1, j), at(i, j + 1)});
-        add({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-      } else {
-        add({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-      }
-    }
-  }
-  return mesh;
-}
-
-/// Refines a random-height lattice two levels and takes the limit of every
-/// refined vertex (closed-form masks). A vertex whose limit lies over the
-/// central face has its limit (x, y) as parameter: the schemes reproduce
-/// linear functions. Its limit height must be the patch's.
+/// Refines a random-height 8 x 8 lattice two levels and takes the limit of
+/// every refined vertex (closed-form masks). A vertex whose limit lies over
+/// the central face, the cell at (4, 4), has its limit (x, y) - (4, 4) as
+/// parameter: the schemes reproduce linear functions. Its limit height must
+/// be the patch's.
 template <int N, typename Weights, typename Point>
 void expect_patch_is_the_limit(const char* scheme_name, bool triangles, Weights weights, Point point) {
   const Scheme* scheme = find_scheme(scheme_name);
   ASSERT_NE(scheme, nullptr);
   const int r = 4;
-  std::vector<double> heights;
-  const PolygonMesh control = lattice_mesh(r, triangles, heights);
+  const PolygonMesh control =
+      test::with_random_heights(triangles ? test::box_spline_grid(2 * r, 2 * r) : test::quad_grid(2 * r, 2 * r), 7);
   std::array<double, N> patch_heights{};
   for (std::size_t k = 0; k < static_cast<std::size_t>(N); ++k) {
     const auto [x, y] = point(k);
-    patch_heights[k] = heights[static_cast<std::size_t>((y + r) * (2 * r + 1) + (x + r))];
+    patch_heights[k] = control.positions[static_cast<std::size_t>((y + r) * (2 * r + 1) + (x + r))].z;
   }
   RefineOptions options;
   options.levels = 2;
   const PolygonMesh refined = refine(control, *scheme, options);
   const LimitResult limit = limit_positions(refined, *scheme);
   int inside = 0;
-  for (const Vec3& p : limit.positions) {
+  for (Vec3 p : limit.positions) {
+    p.x -= r;
+    p.y -= r;
     const bool in_face = triangles ? (p.x >= -1e-12 && p.y >= -1e-12 && p.x + p.y <= 1 + 1e-12)
                                    : (p.x >= -1e-12 && p.y >= -1e-12 && p.x <= 1 + 1e-12 && p.y <= 1 + 1e-12);
     if (!in_face) continue;

@@ -20,30 +20,13 @@
 namespace subdiv {
 namespace {
 
-/// A (2r + 1)^2 lattice of quads, vertex (i, j) at (i, j, 0).
-PolygonMesh quad_lattice(int r) {
-  PolygonMesh mesh;
-  const int n = 2 * r + 1;
-  for (int j = -r; j <= r; ++j) {
-    for (int i = -r; i <= r; ++i) mesh.positions.push_back({static_cast<double>(i), static_cast<double>(j), 0.0});
-  }
-  const auto at = [&](int i, int j) { return static_cast<Index>((j + r) * n + (i + r)); };
-  for (int j = -r; j < r; ++j) {
-    for (int i = -r; i < r; ++i) {
-      for (const Index v : {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}) mesh.face_indices.push_back(v);
-      mesh.face_offsets.push_back(static_cast<Index>(mesh.face_indices.size()));
-    }
-  }
-  return mesh;
-}
-
 TEST(PatchPoints, LatticeGivesTheGridFromEveryCorner) {
-  const PolygonMesh mesh = quad_lattice(3);
+  const PolygonMesh mesh = test::quad_grid(6, 6);
   const MeshTopology topology(mesh);
-  // The face with corners (0,0) (1,0) (1,1) (0,1).
+  // The central face, corners (3,3) (4,3) (4,4) (3,4).
   Index face = kInvalidIndex;
   for (Index f = 0; f < mesh.face_count(); ++f) {
-    if (mesh.positions[static_cast<std::size_t>(mesh.face(f)[0])] == Vec3{0, 0, 0}) face = f;
+    if (mesh.positions[static_cast<std::size_t>(mesh.face(f)[0])] == Vec3{3, 3, 0}) face = f;
   }
   ASSERT_NE(face, kInvalidIndex);
   for (Index k = 0; k < 4; ++k) {
@@ -71,7 +54,7 @@ TEST(PatchPoints, RefusesIrregularPatches) {
   const MeshTopology box_topology(box);
   for (Index c = 0; c < box_topology.corner_count(); ++c) EXPECT_FALSE(bicubic_patch_points(box_topology, c).has_value());
   // The lattice's faces touching its boundary.
-  const PolygonMesh mesh = quad_lattice(2);
+  const PolygonMesh mesh = test::quad_grid(4, 4);
   const MeshTopology topology(mesh);
   int regular = 0;
   for (Index f = 0; f < mesh.face_count(); ++f) {
@@ -84,55 +67,43 @@ TEST(PatchPoints, RefusesIrregularPatches) {
   EXPECT_FALSE(bicubic_patch_points(small_topology, 0).has_value());
 }
 
-TEST(PatchPoints, PatchCornersAreTheLimitPositions) {
-  std::mt19937 random(11);
-  const PolygonMesh torus = perturbed(quad_torus(8, 6, 3.0, 1.0), 0.2, random);
+/// On a perturbed regular torus, every corner's patch evaluated at (0, 0)
+/// must be the scheme's closed-form limit of the corner's vertex.
+template <int N, typename Points, typename Weights>
+void expect_patch_corners_are_limits(const PolygonMesh& torus, const char* scheme_name, Points points_of,
+                                     Weights weights) {
   const MeshTopology topology(torus);
-  const Scheme* scheme = find_scheme("catmull-clark");
+  const Scheme* scheme = find_scheme(scheme_name);
   ASSERT_NE(scheme, nullptr);
   const LimitResult limit = limit_positions(torus, *scheme);
-  const PatchWeights<16> at_origin = bicubic_bspline_weights(0.0, 0.0);
+  const auto at_origin = weights(0.0, 0.0);
   for (Index c = 0; c < topology.corner_count(); ++c) {
-    const auto points = bicubic_patch_points(topology, c);
+    const auto points = points_of(topology, c);
     ASSERT_TRUE(points.has_value()) << "corner " << c;
     Vec3 p{};
-    for (std::size_t k = 0; k < 16; ++k) p = p + at_origin.value[k] * torus.positions[static_cast<std::size_t>((*points)[k])];
+    for (std::size_t k = 0; k < static_cast<std::size_t>(N); ++k) {
+      p = p + at_origin.value[k] * torus.positions[static_cast<std::size_t>((*points)[k])];
+    }
     const Vec3 expected = limit.positions[static_cast<std::size_t>(topology.corner_vertex(c))];
-    EXPECT_LT(norm(p - expected), 1e-12) << "corner " << c;
+    EXPECT_LT(norm(p - expected), 1e-12) << scheme_name << ", corner " << c;
   }
 }
 
-/// A (2r + 1)^2 lattice of vertices (i, j, 0), each cell cut along
-/// (i + 1, j) - (i, j + 1): the three-direction lattice of the box spline.
-PolygonMesh triangle_lattice(int r) {
-  PolygonMesh mesh;
-  const int n = 2 * r + 1;
-  for (int j = -r; j <= r; ++j) {
-    for (int i = -r; i <= r; ++i) mesh.positions.push_back({static_cast<double>(i), static_cast<double>(j), 0.0});
-  }
-  const auto at = [&](int i, int j) { return static_cast<Index>((j + r) * n + (i + r)); };
-  const auto add = [&](std::initializer_list<Index> face) {
-    mesh.face_indices.insert(mesh.face_indices.end(), face);
-    mesh.face_offsets.push_back(static_cast<Index>(mesh.face_indices.size()));
-  };
-  for (int j = -r; j < r; ++j) {
-    for (int i = -r; i < r; ++i) {
-      add({at(i, j), at(i + 1, j), at(i, j + 1)});
-      add({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  }
-  return mesh;
+TEST(PatchPoints, PatchCornersAreTheLimitPositions) {
+  std::mt19937 random(11);
+  expect_patch_corners_are_limits<16>(perturbed(quad_torus(8, 6, 3.0, 1.0), 0.2, random), "catmull-clark",
+                                      bicubic_patch_points, bicubic_bspline_weights);
 }
 
 TEST(PatchPoints, TriangleLatticeGivesTheBoxSplinePointsFromEveryCorner) {
-  const PolygonMesh mesh = triangle_lattice(3);
+  const PolygonMesh mesh = test::box_spline_grid(6, 6);
   const MeshTopology topology(mesh);
-  // Both triangles of cell (0, 0): (0,0) (1,0) (0,1) and (1,0) (1,1) (0,1).
+  // Both triangles of the central cell: (3,3) (4,3) (3,4) and (4,3) (4,4) (3,4).
   int checked = 0;
   for (Index f = 0; f < mesh.face_count(); ++f) {
     const Vec3 first = mesh.positions[static_cast<std::size_t>(mesh.face(f)[0])];
-    if (first != Vec3{0, 0, 0} && first != Vec3{1, 0, 0}) continue;
-    if (mesh.positions[static_cast<std::size_t>(mesh.face(f)[2])] != Vec3{0, 1, 0}) continue;
+    if (first != Vec3{3, 3, 0} && first != Vec3{4, 3, 0}) continue;
+    if (mesh.positions[static_cast<std::size_t>(mesh.face(f)[2])] != Vec3{3, 4, 0}) continue;
     for (Index k = 0; k < 3; ++k) {
       const Index corner = topology.face_first_corner(f) + k;
       const auto points = box_spline_patch_points(topology, corner);
@@ -151,26 +122,14 @@ TEST(PatchPoints, TriangleLatticeGivesTheBoxSplinePointsFromEveryCorner) {
   EXPECT_EQ(checked, 6);
   // Faces touching the boundary have no patch; quads neither.
   EXPECT_FALSE(box_spline_patch_points(topology, 0).has_value());
-  const MeshTopology quads(quad_lattice(3));
+  const MeshTopology quads(test::quad_grid(6, 6));
   for (Index c = 0; c < quads.corner_count(); ++c) EXPECT_FALSE(box_spline_patch_points(quads, c).has_value());
 }
 
 TEST(PatchPoints, BoxSplineCornersAreLoopsLimitPositions) {
   std::mt19937 random(13);
-  const PolygonMesh torus = perturbed(triangle_torus(8, 6, 3.0, 1.0), 0.1, random);
-  const MeshTopology topology(torus);
-  const Scheme* scheme = find_scheme("loop");
-  ASSERT_NE(scheme, nullptr);
-  const LimitResult limit = limit_positions(torus, *scheme);
-  const PatchWeights<12> at_origin = box_spline_weights(0.0, 0.0);
-  for (Index c = 0; c < topology.corner_count(); ++c) {
-    const auto points = box_spline_patch_points(topology, c);
-    ASSERT_TRUE(points.has_value()) << "corner " << c;
-    Vec3 p{};
-    for (std::size_t k = 0; k < 12; ++k) p = p + at_origin.value[k] * torus.positions[static_cast<std::size_t>((*points)[k])];
-    const Vec3 expected = limit.positions[static_cast<std::size_t>(topology.corner_vertex(c))];
-    EXPECT_LT(norm(p - expected), 1e-12) << "corner " << c;
-  }
+  expect_patch_corners_are_limits<12>(perturbed(triangle_torus(8, 6, 3.0, 1.0), 0.1, random), "loop",
+                                      box_spline_patch_points, box_spline_weights);
 }
 
 }  // namespace

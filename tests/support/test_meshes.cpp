@@ -19,17 +19,32 @@ PolygonMesh quad_grid(int n, int m) {
   return mesh;
 }
 
-PolygonMesh triangle_grid(int n, int m) {
+namespace {
+
+// The grid's quads each split into two triangles: along (i, j)-(i+1, j+1),
+// or, `other_diagonal`, along (i+1, j)-(i, j+1).
+PolygonMesh split_grid(int n, int m, bool other_diagonal) {
   PolygonMesh quads = quad_grid(n, m);
   PolygonMesh mesh;
   mesh.positions = quads.positions;
   for (Index f = 0; f < quads.face_count(); ++f) {
     const auto q = quads.face(f);
-    mesh.add_face({q[0], q[1], q[2]});
-    mesh.add_face({q[0], q[2], q[3]});
+    if (other_diagonal) {
+      mesh.add_face({q[0], q[1], q[3]});
+      mesh.add_face({q[1], q[2], q[3]});
+    } else {
+      mesh.add_face({q[0], q[1], q[2]});
+      mesh.add_face({q[0], q[2], q[3]});
+    }
   }
   return mesh;
 }
+
+}  // namespace
+
+PolygonMesh triangle_grid(int n, int m) { return split_grid(n, m, false); }
+
+PolygonMesh box_spline_grid(int n, int m) { return split_grid(n, m, true); }
 
 PolygonMesh jittered(PolygonMesh mesh, unsigned seed) {
   std::mt19937 random(seed);

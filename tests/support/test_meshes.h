@@ -13,6 +13,10 @@ PolygonMesh cube();
 PolygonMesh quad_grid(int n, int m);
 /// Grid whose quads are each split into two triangles.
 PolygonMesh triangle_grid(int n, int m);
+/// Grid whose quads are each split along the diagonal from (i + 1, j) to
+/// (i, j + 1): the lattice of directions e1, e2 and e2 - e1 on which Loop's
+/// box spline is written (analysis/patch_basis.h).
+PolygonMesh box_spline_grid(int n, int m);
 /// Regular tetrahedron.
 PolygonMesh tetrahedron();
 /// The mesh with every vertex moved by up to 0.1 along each axis, the same
