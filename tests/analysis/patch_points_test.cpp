@@ -1,8 +1,8 @@
-// The regular Catmull-Clark patch's control points found by walking the
-// topology (src/analysis/patch_points.h): the lattice's own points in grid
-// order from every starting corner, refusals where a patch is not regular,
-// and, on a perturbed torus, the patch at each corner equal to the scheme's
-// limit of that vertex.
+// The regular Catmull-Clark and Loop patches' control points found by
+// walking the topology (src/analysis/patch_points.h): the lattice's own
+// points in order from every starting corner, refusals where a patch is not
+// regular, and, on perturbed tori, the patch at each corner equal to the
+// scheme's limit of that vertex.
 #include "analysis/patch_points.h"
 
 #include <gtest/gtest.h>
