@@ -18,6 +18,7 @@
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/validation.h"
 #include "grid_refine.h"
+#include "overflow_check.h"
 #include "piecewise_smooth.h"
 #include "../core/row_accumulator.h"
 
@@ -600,10 +601,10 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
     result = refine_levels(mesh, std::move(coarse), scheme, options, fast_step(boundary, method, options), nullptr,
                            false, as_grids);
   });
-  if (by_grids) {
-    result = std::move(*by_grids);
-    if (options.on_level) options.on_level(options.levels, result);
-  }
+  if (by_grids) result = std::move(*by_grids);
+  run_with_threads(options.threads,
+                   [&] { detail::refuse_overflow(result.positions, scheme, options.start_level + options.levels); });
+  if (by_grids && options.on_level) options.on_level(options.levels, result);
   return result;
 }
 
@@ -625,6 +626,7 @@ Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const 
     finest = refine_levels(mesh, std::move(coarse), scheme, options, fast_step(boundary, method, options), on_child,
                            keep == KeepLevels::all);
   });
+  run_with_threads(options.threads, [&] { detail::refuse_overflow(finest.positions, scheme, last); });
   if (keep == KeepLevels::last) h.levels.push_back({std::move(finest), last, std::move(last_map)});
   return h;
 }

@@ -1,4 +1,5 @@
 #include "subdiv/refine/refine.h"
+#include "subdiv/refine/hierarchy.h"
 
 #include <gtest/gtest.h>
 
@@ -242,6 +243,33 @@ TEST(Refine, RejectsWhatItCannotRefine) {
   none.tags.boundary_interpolation = BoundaryInterpolation::none;
   EXPECT_THROW(refine(none, scheme("catmull-clark")), InvalidInputError);
   EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), levels(-1)), InvalidInputError);
+}
+
+// Finite input near the double range: Kobbelt's negative weights grow
+// heights that alternate in sign (the four-point rule gives (1 + 4w) times
+// them), so the result would be infinite and is refused; Catmull-Clark's
+// weights are positive and stay in range.
+TEST(Refine, RefusesAResultThatOverflowsTheDoubleRange) {
+  PolygonMesh huge = test::quad_grid(8, 8);
+  for (Index v = 0; v < huge.vertex_count(); ++v) {
+    Vec3& p = huge.positions[static_cast<std::size_t>(v)];
+    p.z = (static_cast<int>(p.x + p.y) % 2 == 0 ? 1.5e308 : -1.5e308);
+  }
+  ASSERT_TRUE(validate(huge).ok());
+  for (const bool grids : {true, false}) {
+    RefineOptions options = levels(2);
+    options.regular_grids = grids;
+    try {
+      refine(huge, scheme("kobbelt"), options);
+      FAIL() << "kobbelt returned infinite coordinates";
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find("kobbelt overflowed the double range: vertex "), std::string::npos)
+          << e.what();
+    }
+    EXPECT_THROW(refine_hierarchy(huge, scheme("kobbelt"), options), InvalidInputError);
+    const PolygonMesh smooth = refine(huge, scheme("catmull-clark"), options);
+    EXPECT_TRUE(validate(smooth).ok());
+  }
 }
 
 TEST(Refine, EmptyMeshGivesEmptyResultsForEveryScheme) {

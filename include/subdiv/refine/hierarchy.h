@@ -81,7 +81,8 @@ struct Hierarchy {
 /// \return the hierarchy: options.levels + 1 levels, or one with
 ///   KeepLevels::last.
 /// \throws InvalidInputError, ParameterError or ValidationError as
-///   check_refinable() does.
+///   check_refinable() does; InvalidInputError also where a position of the
+///   finest level is not finite (an overflow, as refine() says).
 /// \throws TopologyError where a split refuses a level (see split_topology()).
 /// \throws std::bad_alloc if memory runs out.
 Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {},

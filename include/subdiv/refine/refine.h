@@ -163,7 +163,10 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 ///   check_refinable() does; InvalidInputError also, under the
 ///   piecewise-smooth rules, for options.flatness outside [0, 1] or a concave
 ///   corner whose configuration lacks the flatness modification's spectrum,
-///   once such a corner is met (check_refinable() does not look at them).
+///   once such a corner is met (check_refinable() does not look at them);
+///   and where a position of the result is not finite: finite input near the
+///   double range overflows under rules with negative weights (Kobbelt, the
+///   Butterfly schemes, large tensions).
 /// \throws TopologyError where a split refuses a level (see split_topology():
 ///   a trisecting sqrt3 step on a triangle with two boundary edges).
 /// \throws std::bad_alloc if memory runs out.
