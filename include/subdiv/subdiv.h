@@ -12,3 +12,4 @@
 #include "subdiv/refine.h"
 #include "subdiv/analysis.h"
 #include "subdiv/depth.h"
+#include "subdiv/eval.h"

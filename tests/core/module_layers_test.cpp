@@ -2,7 +2,7 @@
 // only its own module and the modules below it, so no module calls back
 // into one that builds on it.
 //
-//   core < mesh < io, topology < curves < rules < refine < analysis < depth
+//   core < mesh < io, topology < curves < rules < refine < analysis < depth < eval
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 const std::map<std::string, int>& layer_of() {
   static const std::map<std::string, int> layers = {
       {"core", 0},   {"mesh", 1},  {"io", 2},       {"topology", 2}, {"curves", 3},
-      {"rules", 4},  {"refine", 5}, {"analysis", 6}, {"depth", 7},
+      {"rules", 4},  {"refine", 5}, {"analysis", 6}, {"depth", 7},    {"eval", 8},
   };
   return layers;
 }

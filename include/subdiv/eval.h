@@ -1,0 +1,5 @@
+#pragma once
+/// \file
+/// subdiv's eval module: exact evaluation of the limit surface at any parameter.
+
+#include "subdiv/eval/limit_evaluator.h"

@@ -1,0 +1,154 @@
+#pragma once
+/// \file
+/// The limit surface of Catmull-Clark and Loop at any parameter, exact:
+/// regular faces are the bicubic B-spline and the quartic box spline of
+/// their control points, and a face with one extraordinary corner is
+/// evaluated through the eigenbasis of the scheme's own subdivision matrix at
+/// that corner (Stam, SIGGRAPH 1998), with every matrix read off the
+/// project's refinement. Faces with several extraordinary corners, and
+/// Catmull-Clark's non-quads, are refined uniformly (isolated) until each
+/// face below them is one of those two kinds.
+///
+/// Parameterization (ptex faces, as OpenSubdiv's Far::PtexIndices):
+/// - a Catmull-Clark quad is one ptex face, (u, v) in [0, 1]^2: its corner 0
+///   at (0, 0), corner 1 at (1, 0), corner 2 at (1, 1), corner 3 at (0, 1);
+/// - a Catmull-Clark face of n != 4 sides is n ptex faces, one per corner k
+///   in order: the sub-face of the first refinement with (0, 0) at corner k,
+///   (1, 0) at the midpoint of the edge to corner k + 1, (1, 1) at the face's
+///   centre and (0, 1) at the midpoint of the edge from corner k - 1;
+/// - a Loop triangle is one ptex face, u, v >= 0 and u + v <= 1: corner 0 at
+///   (0, 0), corner 1 at (1, 0), corner 2 at (0, 1).
+/// Ptex faces are numbered face by face, in face order.
+///
+/// Scope: closed manifold meshes without tags. Boundaries, creases, corners,
+/// holes and Loop's valence-3 vertices are refused at construction with the
+/// element named.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "subdiv/core/types.h"
+#include "subdiv/mesh/polygon_mesh.h"
+#include "subdiv/refine/refine.h"
+#include "subdiv/rules/scheme.h"
+
+namespace subdiv {
+
+class ExtraordinaryPatch;
+
+/// The limit surface at one parameter: position, derivatives with respect to
+/// the ptex face's (u, v), and the unit normal.
+///
+/// At an extraordinary vertex itself (a ptex corner there) the parametric
+/// derivatives are 0 or unbounded depending on the valence; they are
+/// reported as zero, and the normal comes from the scheme's tangent masks.
+struct LimitPoint {
+  Vec3 position;  ///< the limit point
+  Vec3 du;        ///< d position / du
+  Vec3 dv;        ///< d position / dv
+  Vec3 duu;       ///< d2 position / du2
+  Vec3 duv;       ///< d2 position / du dv
+  Vec3 dvv;       ///< d2 position / dv2
+  /// Unit normal, du x dv normalised (the side the faces are counter-clockwise
+  /// on); zero where the surface is degenerate there (du x dv = 0 away from an
+  /// extraordinary vertex).
+  Vec3 normal;
+};
+
+/// A parameter on the limit surface: a ptex face and (u, v) in it.
+struct SurfaceLocation {
+  Index face = 0;  ///< the ptex face
+  double u = 0.0;  ///< first parameter
+  double v = 0.0;  ///< second parameter
+};
+
+/// Exact evaluation of the limit surface of a control mesh (see the file
+/// comment for the parameterization and scope). Construction isolates the
+/// extraordinary vertices and gathers every patch's control points once;
+/// evaluation reads them only, so concurrent calls are safe. Later changes to
+/// the mesh are not seen.
+class LimitEvaluator {
+ public:
+  /// Prepares the evaluator of \p mesh under \p scheme.
+  /// \param mesh a closed manifold mesh without tags (Loop: triangles).
+  /// \param scheme catmull-clark or loop.
+  /// \param options rule choices for the isolating refinement (threads
+  ///   included); RefineOptions::levels and start_level are not read.
+  /// \throws InvalidInputError, ParameterError or ValidationError as
+  ///   check_refinable() does; InvalidInputError also for another scheme, a
+  ///   boundary, non-manifold or isolated vertex, a tag, or (Loop) a vertex of
+  ///   valence 3, naming the element.
+  /// \throws std::bad_alloc if memory runs out.
+  LimitEvaluator(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {});
+  ~LimitEvaluator();
+  LimitEvaluator(LimitEvaluator&&) noexcept;             ///< Moves the prepared patches.
+  LimitEvaluator& operator=(LimitEvaluator&&) noexcept;  ///< Moves the prepared patches.
+
+  /// \return the number of ptex faces (see the file comment).
+  Index ptex_face_count() const noexcept { return static_cast<Index>(ptex_leaves_.size()) - 1; }
+  /// The first ptex face of control face \p face; a Catmull-Clark n-gon's
+  /// others follow it, one per corner.
+  /// \param face a face of the control mesh.
+  /// \return its first ptex face.
+  /// \throws InvalidInputError if \p face is not a face of the mesh.
+  Index ptex_face_of(Index face) const;
+  /// \return the deepest uniform refinement the isolation took (0: every
+  ///   face was a patch already).
+  int isolation_levels() const noexcept { return isolation_levels_; }
+  /// \return the number of patches the ptex faces are made of.
+  std::size_t patch_count() const noexcept { return leaves_.size(); }
+
+  /// The limit surface at (u, v) of ptex face \p face.
+  /// \param face a ptex face.
+  /// \param u first parameter.
+  /// \param v second parameter.
+  /// \return the point, its derivatives and normal.
+  /// \throws InvalidInputError if \p face is not a ptex face or (u, v) lies
+  ///   outside it (NaN included).
+  LimitPoint evaluate(Index face, double u, double v) const;
+
+  /// evaluate() at every location, in parallel over the calling thread's
+  /// task arena; the results do not depend on the thread count.
+  /// \param at the locations.
+  /// \return one point per location, in order.
+  /// \throws InvalidInputError for the first bad location, as evaluate().
+  /// \throws std::bad_alloc if memory runs out.
+  std::vector<LimitPoint> evaluate(std::span<const SurfaceLocation> at) const;
+
+  /// Where a ptex face's parameter (u, v) is origin + s axis_s + t axis_t in
+  /// a patch's own parameters (s, t).
+  struct Frame {
+    double origin[2] = {0.0, 0.0};  ///< the patch's (0, 0) in (u, v)
+    double axis_s[2] = {1.0, 0.0};  ///< the step of s = 1 in (u, v)
+    double axis_t[2] = {0.0, 1.0};  ///< the step of t = 1 in (u, v)
+  };
+
+ private:
+  /// A patch of an isolated face: its kind, its frame in the ptex face, and
+  /// its control points (from control_[first_control]: 16, 12 or the
+  /// extraordinary patch's ring size).
+  struct Leaf {
+    Frame frame;
+    const ExtraordinaryPatch* extraordinary = nullptr;  ///< null: regular
+    std::size_t first_control = 0;
+    Vec3 corner_normal;  ///< extraordinary: the unit normal at the corner
+  };
+  class Builder;
+
+  void check_location(Index face, double u, double v) const;
+  LimitPoint evaluate_leaf(const Leaf& leaf, double s, double t) const;
+
+  bool triangles_ = false;
+  int isolation_levels_ = 0;
+  std::vector<Index> face_ptex_;    ///< first ptex face per control face, then the count
+  std::vector<Index> ptex_leaves_;  ///< first leaf per ptex face, then the count
+  std::vector<Leaf> leaves_;
+  std::vector<Vec3> positions_;     ///< the kept levels' positions, coarse first
+  std::vector<Index> control_;      ///< every leaf's control points (into positions_), leaf after leaf
+  std::map<int, std::unique_ptr<ExtraordinaryPatch>> patches_;  ///< by valence
+};
+
+}  // namespace subdiv

@@ -1,0 +1,299 @@
+// Exact limit evaluation: construction walks each ptex face down the
+// uniform refinement until every face below it is a regular patch or has
+// one extraordinary corner whose face ring matches the model of its valence
+// (isolation), and records those patches with their frames; evaluation
+// finds the patch holding (u, v) and applies its basis.
+
+#include "subdiv/eval/limit_evaluator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "subdiv/core/error.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/refine/creasing.h"
+#include "subdiv/refine/hierarchy.h"
+#include "../analysis/closed_form_limit.h"
+#include "../analysis/extraordinary_patch.h"
+#include "../analysis/patch_basis.h"
+#include "../analysis/patch_points.h"
+#include "patch_frame.h"
+
+namespace subdiv {
+
+namespace {
+
+// Isolation needs at most two levels on a closed untagged mesh (one makes
+// every Catmull-Clark face a quad, the next separates extraordinary
+// vertices); more means a small mesh whose patches reach a vertex twice.
+constexpr int kMaxIsolationLevels = 6;
+
+std::string face_name(Index face) { return "face " + std::to_string(face); }
+
+}  // namespace
+
+/// Walks the hierarchy and fills the evaluator's patches.
+class LimitEvaluator::Builder {
+ public:
+  Builder(LimitEvaluator& out, const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options)
+      : out_(out), scheme_(scheme), options_(options) {
+    options_.levels = 0;
+    options_.start_level = 0;
+    hierarchy_ = refine_hierarchy(mesh, scheme, options_, KeepLevels::all);
+  }
+
+  void build() {
+    const MeshTopology& coarse = topology(0);
+    const Index regular_size = out_.triangles_ ? 3 : 4;
+    out_.face_ptex_.assign(1, 0);
+    out_.ptex_leaves_.assign(1, 0);
+    for (Index f = 0; f < coarse.face_count(); ++f) {
+      const Index n = coarse.face_size(f);
+      if (n == regular_size) {
+        add_ptex(0, f);
+      } else {  // a Catmull-Clark n-gon: its sub-faces, child face = parent corner
+        for (Index k = 0; k < n; ++k) add_ptex(1, coarse.face_first_corner(f) + k);
+      }
+      out_.face_ptex_.push_back(static_cast<Index>(out_.ptex_leaves_.size()) - 1);
+    }
+    // Control points were recorded per level: shift them into positions_.
+    std::vector<std::size_t> offset(hierarchy_.levels.size());
+    for (std::size_t l = 0; l < hierarchy_.levels.size(); ++l) {
+      offset[l] = out_.positions_.size();
+      const auto& p = hierarchy_.levels[l].mesh.positions;
+      out_.positions_.insert(out_.positions_.end(), p.begin(), p.end());
+    }
+    for (std::size_t i = 0; i < out_.leaves_.size(); ++i) {
+      const std::size_t end = i + 1 < out_.leaves_.size() ? out_.leaves_[i + 1].first_control : out_.control_.size();
+      for (std::size_t c = out_.leaves_[i].first_control; c < end; ++c)
+        out_.control_[c] += static_cast<Index>(offset[static_cast<std::size_t>(leaf_level_[i])]);
+    }
+    out_.isolation_levels_ = static_cast<int>(hierarchy_.levels.size()) - 1;
+  }
+
+ private:
+  void add_ptex(int level, Index face) {
+    add_leaves(level, face, Frame{});
+    out_.ptex_leaves_.push_back(static_cast<Index>(out_.leaves_.size()));
+  }
+
+  const MeshTopology& topology(int level) {
+    while (static_cast<int>(hierarchy_.levels.size()) <= level) {
+      if (static_cast<int>(hierarchy_.levels.size()) > kMaxIsolationLevels)
+        throw InvalidInputError("limit evaluation: the mesh's extraordinary vertices are not isolated after " +
+                                std::to_string(kMaxIsolationLevels) + " levels");
+      refine_further(hierarchy_, scheme_, 1, options_, KeepLevels::all);
+    }
+    while (static_cast<int>(topologies_.size()) <= level)
+      topologies_.push_back(std::make_unique<MeshTopology>(hierarchy_.levels[topologies_.size()].mesh));
+    return *topologies_[static_cast<std::size_t>(level)];
+  }
+
+  bool is_regular_vertex(const MeshTopology& t, Index v) const {
+    const Index regular = out_.triangles_ ? 6 : 4;
+    if (t.vertex_kind(v) != VertexKind::interior || t.valence(v) != regular || t.vertex_face_count(v) != regular)
+      return false;
+    for (const Index c : t.vertex_corners(v))
+      if (t.face_size(t.corner_face(c)) != (out_.triangles_ ? 3 : 4)) return false;
+    return true;
+  }
+
+  const ExtraordinaryPatch& model(int valence) {
+    auto& slot = out_.patches_[valence];
+    if (!slot) slot = std::make_unique<ExtraordinaryPatch>(out_.triangles_ ? SplitRule::triangle : SplitRule::quad, valence);
+    return *slot;
+  }
+
+  void add_leaf(int level, const Frame& frame, const ExtraordinaryPatch* patch, std::span<const Index> points,
+                Vec3 corner_normal = {}) {
+    out_.leaves_.push_back({frame, patch, out_.control_.size(), corner_normal});
+    out_.control_.insert(out_.control_.end(), points.begin(), points.end());
+    leaf_level_.push_back(level);
+  }
+
+  // The patches of `face` on `level`, whose corner 0 is at frame.origin.
+  void add_leaves(int level, Index face, const Frame& frame) {
+    const MeshTopology& t = topology(level);
+    const Index size = out_.triangles_ ? 3 : 4;
+    if (t.face_size(face) == size) {
+      const Index first = t.face_first_corner(face);
+      int irregular = 0;
+      Index corner = first;
+      for (Index k = 0; k < size; ++k)
+        if (!is_regular_vertex(t, t.corner_vertex(first + k))) {
+          ++irregular;
+          corner = first + k;
+        }
+      if (irregular == 0) {
+        if (out_.triangles_) {
+          if (const auto points = box_spline_patch_points(t, first)) return add_leaf(level, frame, nullptr, *points);
+        } else if (const auto points = bicubic_patch_points(t, first)) {
+          return add_leaf(level, frame, nullptr, *points);
+        }
+      } else if (irregular == 1) {
+        const Index vertex = t.corner_vertex(corner);
+        const ExtraordinaryPatch& patch = model(static_cast<int>(t.valence(vertex)));
+        const auto ring = face_ring(t, corner);
+        if (ring && ring->signature == patch.signature())
+          return add_leaf(level, detail::frame_at_corner(frame, static_cast<int>(corner - first), out_.triangles_),
+                          &patch, ring->vertices, corner_normal(level, vertex));
+      }
+    }
+    const Index first = t.face_first_corner(face);
+    if (out_.triangles_) {
+      for (int k = 0; k < 4; ++k) add_leaves(level + 1, 4 * face + k, detail::triangle_child_frame(frame, k));
+    } else {  // a quad here: only the coarse level has other faces, and those are ptex sub-faces
+      for (int k = 0; k < 4; ++k) add_leaves(level + 1, first + k, detail::quad_child_frame(frame, k));
+    }
+  }
+
+  // The unit normal at an extraordinary vertex, from the scheme's tangent masks.
+  Vec3 corner_normal(int level, Index vertex) {
+    const MeshTopology& t = topology(level);
+    const PolygonMesh& mesh = hierarchy_.levels[static_cast<std::size_t>(level)].mesh;
+    if (!creasing_level_ || *creasing_level_ != level) {
+      creasing_ = compute_creasing(mesh, t, boundary_of(mesh, options_), crease_method_of(mesh, options_));
+      creasing_level_ = level;
+      semi_sharp_.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+    }
+    LimitMasks scratch;
+    const auto limit =
+        detail::closed_form_limit(scheme_, detail::LimitLevel{t, *creasing_, mesh.positions, semi_sharp_}, vertex, scratch);
+    if (!limit) throw std::logic_error("limit evaluation: no tangent masks at an isolated extraordinary vertex");
+    const Vec3 n = cross(limit->tangent1, limit->tangent2);
+    const double length = norm(n);
+    return length > 0.0 ? (1.0 / length) * n : Vec3{};
+  }
+
+  LimitEvaluator& out_;
+  const Scheme& scheme_;
+  RefineOptions options_;
+  Hierarchy hierarchy_;
+  std::vector<std::unique_ptr<MeshTopology>> topologies_;
+  std::vector<int> leaf_level_;
+  std::optional<LevelCreasing> creasing_;
+  std::optional<int> creasing_level_;
+  std::vector<char> semi_sharp_;
+};
+
+namespace {
+
+// The first element the evaluator cannot handle, as an error.
+void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
+  const std::string name(scheme.name);
+  if (name != "catmull-clark" && name != "loop")
+    throw InvalidInputError("limit evaluation: " + name + " has no exact evaluator (catmull-clark and loop have)");
+  check_refinable(mesh, scheme, options);
+  if (!mesh.tags.creases.empty() || !mesh.tags.corners.empty() || !mesh.tags.holes.empty())
+    throw InvalidInputError(
+        "limit evaluation: the mesh has crease, corner or hole tags; exact evaluation covers untagged closed meshes "
+        "so far");
+  const MeshTopology t(mesh);
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    const VertexKind kind = t.vertex_kind(v);
+    if (kind == VertexKind::boundary)
+      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) +
+                              " is on a boundary; exact evaluation covers closed meshes so far");
+    if (kind != VertexKind::interior)
+      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is " +
+                              (kind == VertexKind::isolated ? "used by no face" : "non-manifold"));
+    if (name == "loop" && t.valence(v) == 3)
+      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) +
+                              " has valence 3, which Loop's exact evaluation does not cover yet");
+  }
+}
+
+}  // namespace
+
+LimitEvaluator::LimitEvaluator(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
+  check_scope(mesh, scheme, options);
+  triangles_ = scheme.split == SplitRule::triangle;
+  Builder(*this, mesh, scheme, options).build();
+}
+
+LimitEvaluator::~LimitEvaluator() = default;
+LimitEvaluator::LimitEvaluator(LimitEvaluator&&) noexcept = default;
+LimitEvaluator& LimitEvaluator::operator=(LimitEvaluator&&) noexcept = default;
+
+Index LimitEvaluator::ptex_face_of(Index face) const {
+  if (face < 0 || face >= static_cast<Index>(face_ptex_.size()) - 1)
+    throw InvalidInputError("limit evaluation: " + face_name(face) + " is not a face of the mesh");
+  return face_ptex_[static_cast<std::size_t>(face)];
+}
+
+void LimitEvaluator::check_location(Index face, double u, double v) const {
+  if (face < 0 || face >= ptex_face_count())
+    throw InvalidInputError("limit evaluation: ptex face " + std::to_string(face) + " is outside [0, " +
+                            std::to_string(ptex_face_count()) + ")");
+  // Written so that NaN fails too.
+  if (!(u >= 0.0 && v >= 0.0 && (triangles_ ? u + v : std::max(u, v)) <= 1.0))
+    throw InvalidInputError("limit evaluation: (" + std::to_string(u) + ", " + std::to_string(v) +
+                            ") is outside ptex face " + std::to_string(face));
+}
+
+LimitPoint LimitEvaluator::evaluate(Index face, double u, double v) const {
+  check_location(face, u, v);
+  const auto first = static_cast<std::size_t>(ptex_leaves_[static_cast<std::size_t>(face)]);
+  const auto last = static_cast<std::size_t>(ptex_leaves_[static_cast<std::size_t>(face) + 1]);
+  // The patch holding (u, v): the first one it lies in, else (rounding on
+  // a shared edge) the nearest, with (s, t) clamped into it.
+  std::size_t best = first;
+  detail::PatchParameter best_at{};
+  double best_outside = std::numeric_limits<double>::infinity();
+  for (std::size_t i = first; i < last; ++i) {
+    const detail::PatchParameter at = detail::to_patch(leaves_[i].frame, u, v);
+    const double outside = detail::distance_outside(at, triangles_);
+    if (outside < best_outside) {
+      best = i;
+      best_at = at;
+      best_outside = outside;
+      if (outside == 0.0) break;
+    }
+  }
+  const detail::PatchParameter at = detail::clamp_into(best_at, triangles_);
+  return detail::to_ptex(leaves_[best].frame, evaluate_leaf(leaves_[best], at.s, at.t));
+}
+
+LimitPoint LimitEvaluator::evaluate_leaf(const Leaf& leaf, double s, double t) const {
+  const Index* control = control_.data() + leaf.first_control;
+  LimitPoint p{};
+  if (leaf.extraordinary) {
+    std::vector<Vec3> ring(static_cast<std::size_t>(leaf.extraordinary->size()));
+    for (std::size_t i = 0; i < ring.size(); ++i) ring[i] = positions_[static_cast<std::size_t>(control[i])];
+    const PatchPoint q = leaf.extraordinary->evaluate(ring, s, t);
+    p = {q.position, q.du, q.dv, q.duu, q.duv, q.dvv, {}};
+    if (s == 0.0 && t == 0.0) p.normal = leaf.corner_normal;
+    return p;
+  }
+  const auto apply = [&](const auto& w) {
+    for (std::size_t i = 0; i < w.value.size(); ++i) {
+      const Vec3 c = positions_[static_cast<std::size_t>(control[i])];
+      p.position += w.value[i] * c;
+      p.du += w.du[i] * c;
+      p.dv += w.dv[i] * c;
+      p.duu += w.duu[i] * c;
+      p.duv += w.duv[i] * c;
+      p.dvv += w.dvv[i] * c;
+    }
+  };
+  if (triangles_) apply(box_spline_weights(s, t));
+  else apply(bicubic_bspline_weights(s, t));
+  return p;
+}
+
+std::vector<LimitPoint> LimitEvaluator::evaluate(std::span<const SurfaceLocation> at) const {
+  for (const SurfaceLocation& l : at) check_location(l.face, l.u, l.v);
+  std::vector<LimitPoint> out(at.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, at.size(), 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i < r.end(); ++i) out[i] = evaluate(at[i].face, at[i].u, at[i].v);
+  });
+  return out;
+}
+
+}  // namespace subdiv

@@ -1,0 +1,104 @@
+#include "patch_frame.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace subdiv::detail {
+
+namespace {
+
+using Point = std::array<double, 2>;
+
+Point at(const Frame& f, double s, double t) {
+  return {f.origin[0] + s * f.axis_s[0] + t * f.axis_t[0], f.origin[1] + s * f.axis_s[1] + t * f.axis_t[1]};
+}
+
+// The frame with origin a, s running to b and t to c, at `scale` of those steps.
+Frame frame_of(Point a, Point b, Point c, double scale) {
+  Frame f;
+  for (int i = 0; i < 2; ++i) {
+    f.origin[i] = a[static_cast<std::size_t>(i)];
+    f.axis_s[i] = scale * (b[static_cast<std::size_t>(i)] - a[static_cast<std::size_t>(i)]);
+    f.axis_t[i] = scale * (c[static_cast<std::size_t>(i)] - a[static_cast<std::size_t>(i)]);
+  }
+  return f;
+}
+
+// The face's corners in the frame's parameters.
+std::array<Point, 4> quad_corners(const Frame& f) { return {at(f, 0, 0), at(f, 1, 0), at(f, 1, 1), at(f, 0, 1)}; }
+std::array<Point, 3> triangle_corners(const Frame& f) { return {at(f, 0, 0), at(f, 1, 0), at(f, 0, 1)}; }
+
+Point midpoint(Point a, Point b) { return {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])}; }
+
+}  // namespace
+
+Frame frame_at_corner(const Frame& face, int corner, bool triangle) noexcept {
+  if (triangle) {
+    const auto p = triangle_corners(face);
+    const auto k = static_cast<std::size_t>(corner);
+    return frame_of(p[k], p[(k + 1) % 3], p[(k + 2) % 3], 1.0);
+  }
+  const auto p = quad_corners(face);
+  const auto k = static_cast<std::size_t>(corner);
+  return frame_of(p[k], p[(k + 1) % 4], p[(k + 3) % 4], 1.0);
+}
+
+Frame quad_child_frame(const Frame& face, int k) noexcept {
+  const auto p = quad_corners(face);
+  const auto i = static_cast<std::size_t>(k);
+  return frame_of(p[i], p[(i + 1) % 4], p[(i + 3) % 4], 0.5);
+}
+
+Frame triangle_child_frame(const Frame& face, int k) noexcept {
+  const auto p = triangle_corners(face);
+  if (k == 3) return frame_of(midpoint(p[0], p[1]), midpoint(p[1], p[2]), midpoint(p[2], p[0]), 1.0);
+  const auto i = static_cast<std::size_t>(k);
+  return frame_of(p[i], p[(i + 1) % 3], p[(i + 2) % 3], 0.5);
+}
+
+PatchParameter to_patch(const Frame& frame, double u, double v) noexcept {
+  const double du = u - frame.origin[0], dv = v - frame.origin[1];
+  const double det = frame.axis_s[0] * frame.axis_t[1] - frame.axis_t[0] * frame.axis_s[1];
+  return {(du * frame.axis_t[1] - dv * frame.axis_t[0]) / det, (frame.axis_s[0] * dv - frame.axis_s[1] * du) / det};
+}
+
+double distance_outside(PatchParameter at, bool triangle) noexcept {
+  const double below = std::max({0.0, -at.s, -at.t});
+  const double above = triangle ? std::max(0.0, at.s + at.t - 1.0) : std::max({0.0, at.s - 1.0, at.t - 1.0});
+  return std::max(below, above);
+}
+
+PatchParameter clamp_into(PatchParameter at, bool triangle) noexcept {
+  at.s = std::clamp(at.s, 0.0, 1.0);
+  at.t = std::clamp(at.t, 0.0, 1.0);
+  if (triangle && at.s + at.t > 1.0) {
+    const double excess = 0.5 * (at.s + at.t - 1.0);
+    at.s = std::max(0.0, at.s - excess);
+    at.t = 1.0 - at.s;
+  }
+  return at;
+}
+
+LimitPoint to_ptex(const Frame& frame, const LimitPoint& p) noexcept {
+  // s = k00 du + k01 dv, t = k10 du + k11 dv: the frame's inverse.
+  const double det = frame.axis_s[0] * frame.axis_t[1] - frame.axis_t[0] * frame.axis_s[1];
+  const double k00 = frame.axis_t[1] / det, k01 = -frame.axis_t[0] / det;
+  const double k10 = -frame.axis_s[1] / det, k11 = frame.axis_s[0] / det;
+  LimitPoint q;
+  q.position = p.position;
+  q.du = k00 * p.du + k10 * p.dv;
+  q.dv = k01 * p.du + k11 * p.dv;
+  q.duu = (k00 * k00) * p.duu + (2.0 * k00 * k10) * p.duv + (k10 * k10) * p.dvv;
+  q.duv = (k00 * k01) * p.duu + (k00 * k11 + k01 * k10) * p.duv + (k10 * k11) * p.dvv;
+  q.dvv = (k01 * k01) * p.duu + (2.0 * k01 * k11) * p.duv + (k11 * k11) * p.dvv;
+  q.normal = p.normal;
+  if (q.normal == Vec3{}) {
+    const Vec3 n = cross(q.du, q.dv);
+    const double length = norm(n);
+    if (length > 0.0) q.normal = (1.0 / length) * n;
+  }
+  return q;
+}
+
+}  // namespace subdiv::detail

@@ -1,0 +1,342 @@
+// The limit evaluator against independent routes: at the dyadic parameters
+// of a ptex face, which are vertices of the uniform refinement, it must equal
+// those vertices' limit positions and normals from the closed-form limit
+// masks (limit_positions); its derivatives must be the finite differences of
+// its positions; shared edges must give equal points and normals from both
+// sides; regular faces must be the uniform bicubic B-spline written out here.
+
+#include "subdiv/eval/limit_evaluator.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "refine/grid_test_support.h"
+#include "subdiv/analysis/limit.h"
+#include "subdiv/core/error.h"
+#include "subdiv/mesh/topology.h"
+#include "subdiv/refine/hierarchy.h"
+#include "support/refine_options.h"
+#include "support/test_meshes.h"
+
+namespace subdiv {
+namespace {
+
+using grid_test::diagonal;
+
+const Scheme& scheme(const char* name) {
+  const Scheme* s = find_scheme(name);
+  if (!s) throw std::runtime_error(std::string("no scheme ") + name);
+  return *s;
+}
+
+// A closed double pyramid over an n-gon: apexes of valence n, the equator's
+// vertices of valence 4; jittered so that no symmetry hides an error.
+PolygonMesh bipyramid(int n, unsigned seed) {
+  PolygonMesh mesh;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n;
+    mesh.positions.push_back({std::cos(a), std::sin(a), 0.0});
+  }
+  mesh.positions.push_back({0, 0, 1.2});
+  mesh.positions.push_back({0, 0, -0.9});
+  const auto top = static_cast<Index>(n), bottom = static_cast<Index>(n + 1);
+  for (int i = 0; i < n; ++i) {
+    const auto a = static_cast<Index>(i), b = static_cast<Index>((i + 1) % n);
+    mesh.add_face({a, b, top});
+    mesh.add_face({b, a, bottom});
+  }
+  return test::jittered(mesh, seed);
+}
+
+// The bipyramid's triangles split into quads once (bilinear): apexes of
+// valence n, the other vertices of valence 3, 4 and 6, all faces quads.
+PolygonMesh quad_bipyramid(int n, unsigned seed) {
+  return test::jittered(refine(bipyramid(n, seed), scheme("bilinear"), test::levels(1)), seed + 1);
+}
+
+// The ptex parameter of each vertex of a level of refinement, found by
+// refining a face-varying channel that holds each ptex face's corner
+// parameters (the splits make face-varying values linear within faces,
+// which is how the ptex parameter runs), and the ptex face each face of
+// the level lies in.
+struct LevelParameters {
+  PolygonMesh mesh;               // the level, with channel "ptex"
+  std::vector<Index> face_ptex;   // per face of the level
+};
+
+LevelParameters ptex_parameters(const PolygonMesh& control, const Scheme& s, const LimitEvaluator& evaluator,
+                                int levels) {
+  const bool triangles = s.split == SplitRule::triangle;
+  // Catmull-Clark's n-gons have their ptex faces one level down: start there.
+  PolygonMesh start = control;
+  std::vector<Index> face_ptex;
+  FaceVaryingChannel ptex{"ptex", 2, {}, {}};
+  const auto add_corner = [&](double u, double v) {
+    ptex.values.push_back(u);
+    ptex.values.push_back(v);
+    ptex.indices.push_back(static_cast<Index>(ptex.indices.size()));
+  };
+  int levels_left = levels;
+  if (!triangles) {
+    start = refine(control, s, test::levels(1));
+    const MeshTopology coarse(control);
+    for (Index c = 0; c < coarse.corner_count(); ++c) {  // child face c sits at parent corner c
+      const Index f = coarse.corner_face(c), k = c - coarse.face_first_corner(f);
+      if (coarse.face_size(f) == 4) {
+        const std::array<std::array<double, 2>, 4> p = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+        const auto& a = p[static_cast<std::size_t>(k)];
+        const auto& next = p[static_cast<std::size_t>((k + 1) % 4)];
+        const auto& prev = p[static_cast<std::size_t>((k + 3) % 4)];
+        add_corner(a[0], a[1]);
+        add_corner(0.5 * (a[0] + next[0]), 0.5 * (a[1] + next[1]));
+        add_corner(0.5, 0.5);
+        add_corner(0.5 * (a[0] + prev[0]), 0.5 * (a[1] + prev[1]));
+        face_ptex.push_back(evaluator.ptex_face_of(f));
+      } else {
+        add_corner(0, 0);
+        add_corner(1, 0);
+        add_corner(1, 1);
+        add_corner(0, 1);
+        face_ptex.push_back(evaluator.ptex_face_of(f) + k);
+      }
+    }
+    --levels_left;
+  } else {
+    for (Index f = 0; f < control.face_count(); ++f) {
+      add_corner(0, 0);
+      add_corner(1, 0);
+      add_corner(0, 1);
+      face_ptex.push_back(evaluator.ptex_face_of(f));
+    }
+  }
+  start.face_varying_channels = {ptex};
+  const Hierarchy h = refine_hierarchy(start, s, test::levels(levels_left));
+  for (std::size_t l = 1; l < h.levels.size(); ++l) {
+    const MeshTopology parent(h.levels[l - 1].mesh);
+    std::vector<Index> child_ptex;
+    const Index child_faces = h.levels[l].mesh.face_count();
+    for (Index g = 0; g < child_faces; ++g) {
+      const Index parent_face = triangles ? g / 4 : parent.corner_face(g);
+      child_ptex.push_back(face_ptex[static_cast<std::size_t>(parent_face)]);
+    }
+    face_ptex = std::move(child_ptex);
+  }
+  return {h.finest().mesh, face_ptex};
+}
+
+// At every vertex of `levels` refinements, the evaluator equals the
+// vertex's closed-form limit position (to 1e-12 of the mesh's size) and
+// normal (to 1e-9).
+void expect_equals_limits_at_dyadic_points(const PolygonMesh& control, const char* name, int levels) {
+  SCOPED_TRACE(std::string(name) + " at level " + std::to_string(levels));
+  const Scheme& s = scheme(name);
+  const LimitEvaluator evaluator(control, s);
+  const LevelParameters level = ptex_parameters(control, s, evaluator, levels);
+  const LimitResult limits = limit_positions(level.mesh, s);
+  ASSERT_EQ(limits.approximated, 0);
+  const double size = diagonal(control);
+  const FaceVaryingChannel& ptex = level.mesh.face_varying_channels.at(0);
+  int checked = 0;
+  for (Index f = 0; f < level.mesh.face_count(); ++f) {
+    const auto corners = level.mesh.face(f);
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      const std::size_t corner = static_cast<std::size_t>(level.mesh.face_offsets[static_cast<std::size_t>(f)]) + k;
+      const Index value = ptex.indices[corner];
+      const double u = ptex.values[2 * static_cast<std::size_t>(value)];
+      const double v = ptex.values[2 * static_cast<std::size_t>(value) + 1];
+      const LimitPoint p = evaluator.evaluate(level.face_ptex[static_cast<std::size_t>(f)], u, v);
+      const auto w = static_cast<std::size_t>(corners[k]);
+      ASSERT_LE(norm(p.position - limits.positions[w]), 1e-12 * size)
+          << "ptex face " << level.face_ptex[static_cast<std::size_t>(f)] << " at (" << u << ", " << v << ")";
+      ASSERT_LE(norm(p.normal - limits.normals[w]), 1e-9)
+          << "ptex face " << level.face_ptex[static_cast<std::size_t>(f)] << " at (" << u << ", " << v << ")";
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(LimitEvaluator, CatmullClarkEqualsTheLimitsAtDyadicPointsForValences3To12) {
+  expect_equals_limits_at_dyadic_points(test::jittered(test::cube(), 3), "catmull-clark", 3);
+  for (int n = 3; n <= 12; ++n) expect_equals_limits_at_dyadic_points(quad_bipyramid(n, 10u + n), "catmull-clark", 3);
+}
+
+TEST(LimitEvaluator, CatmullClarkNGonsAreAddressedByTheirSubFaces) {
+  // Triangles and pentagons: each corner a ptex face of the first level.
+  for (int n : {3, 5, 7}) expect_equals_limits_at_dyadic_points(bipyramid(n, 40u + n), "catmull-clark", 3);
+}
+
+TEST(LimitEvaluator, LoopEqualsTheLimitsAtDyadicPointsForValences4To12) {
+  for (int n = 4; n <= 12; ++n) expect_equals_limits_at_dyadic_points(bipyramid(n, 70u + n), "loop", 3);
+}
+
+TEST(LimitEvaluator, RegularTorusesNeedNoIsolation) {
+  const LimitEvaluator quads(grid_test::torus(8), scheme("catmull-clark"));
+  EXPECT_EQ(quads.isolation_levels(), 0);
+  EXPECT_EQ(quads.patch_count(), 64u);
+  const LimitEvaluator triangles(grid_test::triangulated_torus(8), scheme("loop"));
+  EXPECT_EQ(triangles.isolation_levels(), 0);
+  EXPECT_EQ(triangles.patch_count(), 128u);
+  expect_equals_limits_at_dyadic_points(grid_test::torus(8), "catmull-clark", 3);
+  expect_equals_limits_at_dyadic_points(grid_test::triangulated_torus(8), "loop", 3);
+}
+
+// The uniform cubic B-spline basis written out (not the library's table).
+std::array<double, 4> cubic_bspline(double t) {
+  const double s = 1.0 - t;
+  return {s * s * s / 6.0, (3 * t * t * t - 6 * t * t + 4) / 6.0, (-3 * t * t * t + 3 * t * t + 3 * t + 1) / 6.0,
+          t * t * t / 6.0};
+}
+
+TEST(LimitEvaluator, RegularQuadsAreTheBicubicBSplineOfTheirControlPoints) {
+  const int n = 8;
+  const PolygonMesh torus = grid_test::torus(n);
+  const LimitEvaluator evaluator(torus, scheme("catmull-clark"));
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto id = [n](int i, int j) { return static_cast<std::size_t>(((j + n) % n) * n + (i + n) % n); };
+  for (int trial = 0; trial < 200; ++trial) {
+    const int i = trial % n, j = (trial / n) % n;
+    const double u = unit(random), v = unit(random);
+    const auto bu = cubic_bspline(u), bv = cubic_bspline(v);
+    Vec3 expected;
+    for (int b = 0; b < 4; ++b)
+      for (int a = 0; a < 4; ++a) expected += (bu[static_cast<std::size_t>(a)] * bv[static_cast<std::size_t>(b)]) *
+                                              torus.positions[id(i + a - 1, j + b - 1)];
+    const LimitPoint p = evaluator.evaluate(static_cast<Index>(j * n + i), u, v);
+    ASSERT_LE(norm(p.position - expected), 1e-13 * norm(expected)) << "face " << j * n + i;
+  }
+}
+
+// Central differences of the positions (step h: error h^2 times the third
+// derivatives) and of the first derivatives.
+void expect_derivatives_are_differences(const PolygonMesh& control, const char* name, unsigned seed) {
+  SCOPED_TRACE(name);
+  const LimitEvaluator evaluator(control, scheme(name));
+  const bool triangles = std::string(name) == "loop";
+  const double h = 1e-5, size = diagonal(control);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.05, 0.9);
+  for (Index face = 0; face < evaluator.ptex_face_count(); ++face) {
+    double u = unit(random), v = unit(random);
+    if (triangles && u + v > 0.9) {
+      u *= 0.45;
+      v *= 0.45;
+    }
+    const LimitPoint p = evaluator.evaluate(face, u, v);
+    const LimitPoint pu = evaluator.evaluate(face, u + h, v), mu = evaluator.evaluate(face, u - h, v);
+    const LimitPoint pv = evaluator.evaluate(face, u, v + h), mv = evaluator.evaluate(face, u, v - h);
+    const double scale = size * 1e-6 + norm(p.du) + norm(p.dv);
+    ASSERT_LE(norm((1 / (2 * h)) * (pu.position - mu.position) - p.du), 1e-6 * scale) << "face " << face;
+    ASSERT_LE(norm((1 / (2 * h)) * (pv.position - mv.position) - p.dv), 1e-6 * scale) << "face " << face;
+    const double second = size * 1e-6 + norm(p.duu) + norm(p.duv) + norm(p.dvv);
+    ASSERT_LE(norm((1 / (2 * h)) * (pu.du - mu.du) - p.duu), 1e-5 * second) << "face " << face;
+    ASSERT_LE(norm((1 / (2 * h)) * (pv.du - mv.du) - p.duv), 1e-5 * second) << "face " << face;
+    ASSERT_LE(norm((1 / (2 * h)) * (pv.dv - mv.dv) - p.dvv), 1e-5 * second) << "face " << face;
+    ASSERT_NEAR(norm(p.normal), 1.0, 1e-12);
+  }
+}
+
+TEST(LimitEvaluator, DerivativesAreTheDifferencesOfPositions) {
+  expect_derivatives_are_differences(quad_bipyramid(5, 1), "catmull-clark", 1);
+  expect_derivatives_are_differences(bipyramid(5, 2), "catmull-clark", 2);  // n-gons' sub-faces
+  expect_derivatives_are_differences(bipyramid(7, 3), "loop", 3);
+}
+
+// Every interior edge sampled from both of its faces: equal points and
+// normals (meshes whose faces are their ptex faces).
+void expect_continuous_across_edges(const PolygonMesh& control, const char* name) {
+  SCOPED_TRACE(name);
+  const LimitEvaluator evaluator(control, scheme(name));
+  const MeshTopology t(control);
+  const bool triangles = std::string(name) == "loop";
+  const std::vector<std::array<double, 2>> quad = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<std::array<double, 2>> triangle = {{0, 0}, {1, 0}, {0, 1}};
+  const auto& corners = triangles ? triangle : quad;
+  const double size = diagonal(control);
+  // The point a of the way along corner c's edge (from its vertex to the next).
+  const auto along = [&](Index c, double a) {
+    const Index f = t.corner_face(c);
+    const auto k = static_cast<std::size_t>(c - t.face_first_corner(f));
+    const auto& p = corners[k];
+    const auto& q = corners[(k + 1) % corners.size()];
+    return evaluator.evaluate(f, p[0] + a * (q[0] - p[0]), p[1] + a * (q[1] - p[1]));
+  };
+  int checked = 0;
+  for (Index e = 0; e < t.edge_count(); ++e) {
+    const auto sides = t.edge_corners(e);
+    ASSERT_EQ(sides.size(), 2u);
+    for (const double a : {0.0, 0.125, 0.3, 0.5, 0.77, 1.0}) {
+      const LimitPoint one = along(sides[0], a), other = along(sides[1], 1.0 - a);
+      ASSERT_LE(norm(one.position - other.position), 1e-12 * size) << "edge " << e << " at " << a;
+      ASSERT_LE(norm(one.normal - other.normal), 1e-10) << "edge " << e << " at " << a;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 50);
+}
+
+TEST(LimitEvaluator, PointsAndNormalsAreContinuousAcrossEdges) {
+  for (int n : {3, 5, 8, 12}) expect_continuous_across_edges(quad_bipyramid(n, 20u + n), "catmull-clark");
+  expect_continuous_across_edges(test::jittered(test::cube(), 9), "catmull-clark");
+  for (int n : {4, 5, 8, 12}) expect_continuous_across_edges(bipyramid(n, 30u + n), "loop");
+}
+
+TEST(LimitEvaluator, BatchesEqualSingleCalls) {
+  const LimitEvaluator evaluator(quad_bipyramid(6, 4), scheme("catmull-clark"));
+  std::vector<SurfaceLocation> at;
+  std::mt19937 random(8);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 2000; ++i)
+    at.push_back({static_cast<Index>(i % evaluator.ptex_face_count()), unit(random), unit(random)});
+  const std::vector<LimitPoint> batch = evaluator.evaluate(at);
+  ASSERT_EQ(batch.size(), at.size());
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const LimitPoint one = evaluator.evaluate(at[i].face, at[i].u, at[i].v);
+    ASSERT_EQ(batch[i].position, one.position);
+    ASSERT_EQ(batch[i].du, one.du);
+    ASSERT_EQ(batch[i].normal, one.normal);
+  }
+}
+
+TEST(LimitEvaluator, RefusesWhatItDoesNotCover) {
+  const auto message = [](auto&& make) {
+    try {
+      make();
+    } catch (const InvalidInputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([] { LimitEvaluator(test::quad_grid(3, 3), scheme("catmull-clark")); }).find("is on a boundary"),
+            std::string::npos);
+  EXPECT_NE(message([] { LimitEvaluator(test::tetrahedron(), scheme("loop")); }).find("has valence 3"),
+            std::string::npos);
+  EXPECT_NE(message([] { LimitEvaluator(test::cube(), scheme("doo-sabin")); }).find("has no exact evaluator"),
+            std::string::npos);
+  PolygonMesh creased = test::cube();
+  creased.tags.creases = {{0, 1, 10.0}};
+  EXPECT_NE(message([&] { LimitEvaluator(creased, scheme("catmull-clark")); }).find("tags"), std::string::npos);
+
+  const LimitEvaluator evaluator(test::cube(), scheme("catmull-clark"));
+  EXPECT_EQ(evaluator.ptex_face_count(), 6);
+  EXPECT_THROW(evaluator.evaluate(6, 0.5, 0.5), InvalidInputError);
+  EXPECT_THROW(evaluator.evaluate(-1, 0.5, 0.5), InvalidInputError);
+  EXPECT_THROW(evaluator.evaluate(0, 1.5, 0.5), InvalidInputError);
+  EXPECT_THROW(evaluator.evaluate(0, std::nan(""), 0.5), InvalidInputError);
+  EXPECT_THROW(evaluator.ptex_face_of(6), InvalidInputError);
+  const std::vector<SurfaceLocation> bad = {{0, 0.5, 0.5}, {2, -0.1, 0.0}};
+  EXPECT_THROW(evaluator.evaluate(bad), InvalidInputError);
+  const LimitEvaluator loop(bipyramid(5, 1), scheme("loop"));
+  EXPECT_THROW(loop.evaluate(0, 0.6, 0.6), InvalidInputError);  // outside the triangle
+  EXPECT_NO_THROW(loop.evaluate(0, 0.5, 0.5));
+}
+
+}  // namespace
+}  // namespace subdiv
