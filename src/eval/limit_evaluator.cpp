@@ -34,6 +34,10 @@ namespace {
 // vertices); more means a small mesh whose patches reach a vertex twice.
 constexpr int kMaxIsolationLevels = 6;
 
+// How far outside a ptex face a parameter may lie and still be taken (as
+// the nearest point of the face).
+constexpr double kDomainSlack = 1e-12;
+
 std::string face_name(Index face) { return "face " + std::to_string(face); }
 
 }  // namespace
@@ -231,8 +235,9 @@ void LimitEvaluator::check_location(Index face, double u, double v) const {
   if (face < 0 || face >= ptex_face_count())
     throw InvalidInputError("limit evaluation: ptex face " + std::to_string(face) + " is outside [0, " +
                             std::to_string(ptex_face_count()) + ")");
-  // Written so that NaN fails too.
-  if (!(u >= 0.0 && v >= 0.0 && (triangles_ ? u + v : std::max(u, v)) <= 1.0))
+  // Written so that NaN fails too. Rounding slack: a parameter computed as
+  // i / n + j / n can land an ulp outside; it is clamped onto the face.
+  if (!(u >= -kDomainSlack && v >= -kDomainSlack && (triangles_ ? u + v : std::max(u, v)) <= 1.0 + kDomainSlack))
     throw InvalidInputError("limit evaluation: (" + std::to_string(u) + ", " + std::to_string(v) +
                             ") is outside ptex face " + std::to_string(face));
 }

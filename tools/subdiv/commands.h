@@ -42,5 +42,8 @@ Command add_depth_command(CLI::App& app);
 Command add_adaptive_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_eval_command(CLI::App& app);
+Command add_tessellate_command(CLI::App& app);
+Command add_project_command(CLI::App& app);
 
 }  // namespace subdiv::cli

@@ -58,6 +58,9 @@ int main(int argc, char** argv) {
   const Command adaptive = add_adaptive_command(app);
   const Command render = add_render_command(app);
   const Command compare = add_compare_command(app);
+  const Command eval = add_eval_command(app);
+  const Command tessellate = add_tessellate_command(app);
+  const Command project = add_project_command(app);
 
   // A first word that names no command: say which one was meant.
   if (argc > 1 && argv[1][0] != '-') {
@@ -103,6 +106,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("adaptive")) return finish(adaptive());
     if (app.got_subcommand("render")) return finish(render());
     if (app.got_subcommand("compare")) return finish(compare());
+    if (app.got_subcommand("eval")) return finish(eval());
+    if (app.got_subcommand("tessellate")) return finish(tessellate());
+    if (app.got_subcommand("project")) return finish(project());
     print_error("no command given (run 'subdiv --help' for usage)");
     return kExitBadInput;
   } catch (const subdiv::Error& e) {

@@ -95,6 +95,8 @@ class LimitEvaluator {
   /// \return its first ptex face.
   /// \throws InvalidInputError if \p face is not a face of the mesh.
   Index ptex_face_of(Index face) const;
+  /// \return whether the ptex faces are triangles (Loop) rather than quads.
+  bool triangles() const noexcept { return triangles_; }
   /// \return the deepest uniform refinement the isolation took (0: every
   ///   face was a patch already).
   int isolation_levels() const noexcept { return isolation_levels_; }
@@ -107,7 +109,8 @@ class LimitEvaluator {
   /// \param v second parameter.
   /// \return the point, its derivatives and normal.
   /// \throws InvalidInputError if \p face is not a ptex face or (u, v) lies
-  ///   outside it (NaN included).
+  ///   outside it by more than 1e-12 (NaN included); a point outside by less
+  ///   is evaluated at the nearest point of the face.
   LimitPoint evaluate(Index face, double u, double v) const;
 
   /// evaluate() at every location, in parallel over the calling thread's
