@@ -171,6 +171,60 @@ run limit-nonmanifold 1 limit "$data/nonmanifold_edge.obj" -o "$work/x.obj" && s
   stderr_has limit-nonmanifold "nonmanifold_edge.obj:9: edge 0-1 is shared by 3 faces"
 run limit-quads-for-loop 1 limit "$meshes/cube.obj" -s loop -o "$work/x.obj" && stderr_one_line limit-quads-for-loop &&
   stderr_has limit-quads-for-loop "cube.obj:11: loop needs a triangle mesh"
+
+# The exact limit surface: eval, tessellate, project.
+printf '# face u v\n0 0 0\n0 0.5 0.5\n\n5 1 1\n' > "$work/at.txt"
+run eval-cube 0 eval "$meshes/cube.obj" -s catmull-clark --at "$work/at.txt" --derivatives &&
+  [ "$(wc -l <"$work/out")" -eq 3 ] && [ "$(awk '{print NF}' "$work/out" | sort -u)" = "12" ] && pass ||
+  fail "eval-cube: expected 3 lines of 12 numbers: $(cat "$work/out")"
+# Ptex face 0's corner (0, 0) is the limit of the cube's vertex there, as 'limit' writes it.
+eval_point=$(head -1 "$work/out" | awk '{print $1, $2, $3}')
+run limit-cube-for-eval 0 limit "$meshes/cube.obj" -s catmull-clark -o "$work/cube_limit.obj"
+first_vertex=$(awk '$1 == "f" {split($2, a, "/"); print a[1]; exit}' "$meshes/cube.obj")
+limit_point=$(awk -v n="$first_vertex" '$1 == "v" {i++; if (i == n) {print $2, $3, $4; exit}}' "$work/cube_limit.obj")
+awk -v a="$limit_point" -v b="$eval_point" 'BEGIN {split(a, x); split(b, y); d = 0;
+  for (i = 1; i <= 3; i++) d += (x[i] - y[i])^2; exit !(d < 1e-20)}' && pass ||
+  fail "eval-cube: corner (0, 0) of ptex face 0 is $eval_point, the vertex limit $limit_point"
+run eval-output 0 eval "$meshes/cube.obj" --at "$work/at.txt" -o "$work/eval.txt" &&
+  stdout_has eval-output "wrote $work/eval.txt: 3 limit points" && [ "$(wc -l <"$work/eval.txt")" -eq 3 ] && pass ||
+  fail "eval-output: $work/eval.txt"
+printf '0 0.5\n' > "$work/at_short.txt"
+run eval-short-line 1 eval "$meshes/cube.obj" --at "$work/at_short.txt" && stderr_one_line eval-short-line &&
+  stderr_has eval-short-line "at_short.txt:1: expected three finite numbers per line (face u v)"
+printf '0 0.5 0.5\n6 0.5 0.5\n' > "$work/at_face.txt"
+run eval-face-range 1 eval "$meshes/cube.obj" --at "$work/at_face.txt" && stderr_one_line eval-face-range &&
+  stderr_has eval-face-range "point 2: face 6 is not a ptex face"
+printf '0 1.5 0.5\n' > "$work/at_outside.txt"
+run eval-outside 1 eval "$meshes/cube.obj" --at "$work/at_outside.txt" && stderr_one_line eval-outside &&
+  stderr_has eval-outside "is outside ptex face 0"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/one_quad.obj"
+run eval-boundary 1 eval "$work/one_quad.obj" --at "$work/at.txt" && stderr_one_line eval-boundary &&
+  stderr_has eval-boundary "one_quad.obj: limit evaluation: vertex 0 is on a boundary"
+run eval-tags 1 eval "$meshes/l_shape.obj" --at "$work/at.txt" && stderr_one_line eval-tags &&
+  stderr_has eval-tags "l_shape.obj: limit evaluation: the mesh has crease, corner or hole tags"
+run eval-into-input 1 eval "$meshes/cube.obj" --at "$work/at.txt" -o "$work/at.txt" && stderr_one_line eval-into-input &&
+  stderr_has eval-into-input "output is the input file"
+run eval-scheme 1 eval "$meshes/cube.obj" -s doo-sabin --at "$work/at.txt" && stderr_one_line eval-scheme &&
+  stderr_has eval-scheme "doo-sabin has no exact evaluator"
+run tessellate-cube 0 tessellate "$meshes/cube.obj" --rate 4 -o "$work/cube_t.obj" &&
+  stdout_has tessellate-cube "wrote $work/cube_t.obj: 98 vertices, 96 faces"
+run tessellate-closed 0 info "$work/cube_t.obj" && stdout_has tessellate-closed "edges           192  (boundary 0, non-manifold 0)"
+run tessellate-loop 0 tessellate "$meshes/elephant.obj" -s loop --rate 2 -o "$work/elephant_t.obj" &&
+  run tessellate-loop-closed 0 info "$work/elephant_t.obj" && stdout_has tessellate-loop-closed "(boundary 0, non-manifold 0)"
+run tessellate-ngons 0 tessellate "$meshes/rook.obj" --rate 4 -o "$work/rook_t.obj" &&
+  run tessellate-ngons-closed 0 info "$work/rook_t.obj" && stdout_has tessellate-ngons-closed "(boundary 0, non-manifold 0)"
+run tessellate-valence-3 1 tessellate "$meshes/tetrahedron.obj" -s loop --rate 2 -o "$work/x.obj" &&
+  stderr_one_line tessellate-valence-3 && stderr_has tessellate-valence-3 "has valence 3"
+run tessellate-odd 1 tessellate "$meshes/spot_control_mesh.obj" --rate 3 -o "$work/x.obj" &&
+  stderr_one_line tessellate-odd && stderr_has tessellate-odd "give an even rate"
+[ ! -e "$work/x.obj" ] && pass || fail "tessellate-odd: wrote $work/x.obj"
+printf '0.5 0.5 2\n0.5 0.5 0.5\n' > "$work/points.txt"
+run project-cube 0 project "$meshes/cube.obj" --points "$work/points.txt" &&
+  [ "$(wc -l <"$work/out")" -eq 2 ] && [ "$(awk '{print NF}' "$work/out" | sort -u)" = "7" ] && pass ||
+  fail "project-cube: expected 2 lines of 7 numbers: $(cat "$work/out")"
+printf '0.5 nan 2\n' > "$work/points_nan.txt"
+run project-nan 1 project "$meshes/cube.obj" --points "$work/points_nan.txt" && stderr_one_line project-nan &&
+  stderr_has project-nan "points_nan.txt:1: expected three finite numbers"
 run depth-nonmanifold 1 depth "$data/nonmanifold_edge.obj" -s catmull-clark --eps 0.01 &&
   stderr_one_line depth-nonmanifold && stderr_has depth-nonmanifold "nonmanifold_edge.obj:9: edge 0-1 is shared by 3 faces"
 run adaptive-quads-for-loop 1 adaptive "$meshes/cube.obj" -s loop --eps 0.01 -o "$work/x.obj" &&
@@ -885,7 +939,8 @@ if [ -d "$shared" ] && [ "${SUBDIV_CLI_SWEEP:-0}" = 1 ]; then
   while IFS= read -r -d '' mesh; do
     timeout 30 "$SUBDIV" refine "$mesh" -o "$work/sweep.obj" -q >/dev/null 2>"$work/err" || continue
     for args in "limit -o $work/sweep_limit.obj" "depth --eps 0.01" "adaptive --eps 0.05 --max-level 3 -o $work/sweep_adaptive.obj" \
-                "convert $work/sweep.ply" "info" "render -l 1 --size 64x48 -o $work/sweep.png"; do
+                "convert $work/sweep.ply" "info" "render -l 1 --size 64x48 -o $work/sweep.png" \
+                "tessellate --rate 2 -o $work/sweep_tessellation.obj"; do
       set -- $args
       command=$1
       shift

@@ -38,7 +38,10 @@ void append(std::string& out, const Vec3& v) {
 }
 
 int run_eval(const EvalCommandOptions& opt) {
-  if (!opt.output.empty()) check_output_path(opt.input, opt.output);
+  if (!opt.output.empty()) {
+    check_not_an_input(opt.input, opt.output);
+    check_not_an_input(opt.at, opt.output);
+  }
   PhaseClock clock;
   const LimitSurface surface = limit_surface_of(opt.input, opt.read, opt.refinement);
   const LimitEvaluator& evaluator = surface.evaluator;

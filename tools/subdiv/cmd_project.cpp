@@ -30,7 +30,10 @@ struct ProjectCommandOptions {
 };
 
 int run_project(const ProjectCommandOptions& opt) {
-  if (!opt.output.empty()) check_output_path(opt.input, opt.output);
+  if (!opt.output.empty()) {
+    check_not_an_input(opt.input, opt.output);
+    check_not_an_input(opt.points, opt.output);
+  }
   PhaseClock clock;
   const LimitSurface surface = limit_surface_of(opt.input, opt.read, opt.refinement);
   std::vector<Vec3> points;

@@ -11,6 +11,10 @@ namespace subdiv::cli {
 
 void check_output_path(const std::string& input, const std::string& output) {
   format_from_path(output);  // fail on a bad extension before reading
+  check_not_an_input(input, output);
+}
+
+void check_not_an_input(const std::string& input, const std::string& output) {
   std::error_code ec;
   if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
     throw InvalidInputError(output + ": output is the input file; choose another name (inputs are never modified)");

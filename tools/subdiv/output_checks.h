@@ -11,6 +11,10 @@ namespace subdiv::cli {
 /// same file as `input` (inputs are never modified).
 void check_output_path(const std::string& input, const std::string& output);
 
+/// Throws InvalidInputError where `output` is the file `input` (a text
+/// output of any name).
+void check_not_an_input(const std::string& input, const std::string& output);
+
 /// Throws InvalidInputError when --ascii is given for an output that is not
 /// PLY or STL (the formats with both encodings; glTF's are two extensions).
 void check_ascii_applies(bool ascii, const std::string& output);
