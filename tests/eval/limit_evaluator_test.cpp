@@ -167,6 +167,13 @@ TEST(LimitEvaluator, CatmullClarkEqualsTheLimitsAtDyadicPointsForValences3To12) 
   for (int n = 3; n <= 12; ++n) expect_equals_limits_at_dyadic_points(quad_bipyramid(n, 10u + n), "catmull-clark", 3);
 }
 
+// Down to 2^-6 of the cube's corners (valence 3): the powers of the
+// subdivision matrix through its eigenbasis at n = 5.
+TEST(LimitEvaluator, CloseToExtraordinaryVerticesTheLimitsStillAgree) {
+  expect_equals_limits_at_dyadic_points(test::jittered(test::cube(), 3), "catmull-clark", 6);
+  expect_equals_limits_at_dyadic_points(bipyramid(5, 6), "loop", 5);
+}
+
 TEST(LimitEvaluator, CatmullClarkNGonsAreAddressedByTheirSubFaces) {
   // Triangles and pentagons: each corner a ptex face of the first level.
   for (int n : {3, 5, 7}) expect_equals_limits_at_dyadic_points(bipyramid(n, 40u + n), "catmull-clark", 3);
