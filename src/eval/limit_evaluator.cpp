@@ -221,7 +221,7 @@ LimitEvaluator::LimitEvaluator(const PolygonMesh& mesh, const Scheme& scheme, co
   Builder(*this, mesh, scheme, options).build();
 }
 
-LimitEvaluator::~LimitEvaluator() = default;
+LimitEvaluator::~LimitEvaluator() noexcept = default;
 LimitEvaluator::LimitEvaluator(LimitEvaluator&&) noexcept = default;
 LimitEvaluator& LimitEvaluator::operator=(LimitEvaluator&&) noexcept = default;
 

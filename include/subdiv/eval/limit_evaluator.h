@@ -83,9 +83,15 @@ class LimitEvaluator {
   ///   valence 3, naming the element.
   /// \throws std::bad_alloc if memory runs out.
   LimitEvaluator(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {});
-  ~LimitEvaluator();
-  LimitEvaluator(LimitEvaluator&&) noexcept;             ///< Moves the prepared patches.
-  LimitEvaluator& operator=(LimitEvaluator&&) noexcept;  ///< Moves the prepared patches.
+  /// Frees the prepared patches.
+  ~LimitEvaluator() noexcept;
+  /// Moves the prepared patches.
+  /// \param other the evaluator moved from (left empty).
+  LimitEvaluator(LimitEvaluator&& other) noexcept;
+  /// Moves the prepared patches.
+  /// \param other the evaluator moved from (left empty).
+  /// \return this evaluator.
+  LimitEvaluator& operator=(LimitEvaluator&& other) noexcept;
 
   /// \return the number of ptex faces (see the file comment).
   Index ptex_face_count() const noexcept { return static_cast<Index>(ptex_leaves_.size()) - 1; }
