@@ -19,6 +19,8 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/creasing.h"
 #include "subdiv/refine/hierarchy.h"
+#include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/loop.h"
 #include "../analysis/closed_form_limit.h"
 #include "../analysis/extraordinary_patch.h"
 #include "../analysis/patch_basis.h"
@@ -190,9 +192,11 @@ namespace {
 
 // The first element the evaluator cannot handle, as an error.
 void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
-  const std::string name(scheme.name);
-  if (name != "catmull-clark" && name != "loop")
-    throw InvalidInputError("limit evaluation: " + name + " has no exact evaluator (catmull-clark and loop have)");
+  // The patches model exactly these two schemes' rules.
+  const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name);
+  if (name != catmull_clark && name != loop)
+    throw InvalidInputError("limit evaluation: " + name + " has no exact evaluator (" + catmull_clark + " and " + loop +
+                            " have)");
   check_refinable(mesh, scheme, options);
   if (!mesh.tags.creases.empty() || !mesh.tags.corners.empty() || !mesh.tags.holes.empty())
     throw InvalidInputError(
@@ -207,7 +211,7 @@ void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOpti
     if (kind != VertexKind::interior)
       throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is " +
                               (kind == VertexKind::isolated ? "used by no face" : "non-manifold"));
-    if (name == "loop" && t.valence(v) == 3)
+    if (name == loop && t.valence(v) == 3)
       throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) +
                               " has valence 3, which Loop's exact evaluation does not cover yet");
   }
