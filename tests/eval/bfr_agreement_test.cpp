@@ -140,23 +140,8 @@ TEST(BfrAgreement, RegularFacesAreTheSamePatches) {
   EXPECT_LE(triangles.derivatives, 1e-12);
 }
 
-// A closed double pyramid, split into quads once for Catmull-Clark.
-PolygonMesh bipyramid(int n, unsigned seed) {
-  PolygonMesh mesh;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * std::numbers::pi * i / n;
-    mesh.positions.push_back({std::cos(a), std::sin(a), 0.0});
-  }
-  mesh.positions.push_back({0, 0, 1.2});
-  mesh.positions.push_back({0, 0, -0.9});
-  const auto top = static_cast<Index>(n), bottom = static_cast<Index>(n + 1);
-  for (int i = 0; i < n; ++i) {
-    const auto a = static_cast<Index>(i), b = static_cast<Index>((i + 1) % n);
-    mesh.add_face({a, b, top});
-    mesh.add_face({b, a, bottom});
-  }
-  return test::jittered(mesh, seed);
-}
+// The double pyramid, jittered (split into quads for Catmull-Clark below).
+PolygonMesh bipyramid(int n, unsigned seed) { return test::jittered(test::bipyramid(n), seed); }
 
 TEST(BfrAgreement, NearExtraordinaryVerticesBfrApproachesTheExactSurfaceAsItIsolatesDeeper) {
   struct Case {

@@ -37,22 +37,7 @@ const Scheme& scheme(const char* name) {
 
 // A closed double pyramid over an n-gon: apexes of valence n, the equator's
 // vertices of valence 4; jittered so that no symmetry hides an error.
-PolygonMesh bipyramid(int n, unsigned seed) {
-  PolygonMesh mesh;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * std::numbers::pi * i / n;
-    mesh.positions.push_back({std::cos(a), std::sin(a), 0.0});
-  }
-  mesh.positions.push_back({0, 0, 1.2});
-  mesh.positions.push_back({0, 0, -0.9});
-  const auto top = static_cast<Index>(n), bottom = static_cast<Index>(n + 1);
-  for (int i = 0; i < n; ++i) {
-    const auto a = static_cast<Index>(i), b = static_cast<Index>((i + 1) % n);
-    mesh.add_face({a, b, top});
-    mesh.add_face({b, a, bottom});
-  }
-  return test::jittered(mesh, seed);
-}
+PolygonMesh bipyramid(int n, unsigned seed) { return test::jittered(test::bipyramid(n), seed); }
 
 // The bipyramid's triangles split into quads once (bilinear): apexes of
 // valence n, the other vertices of valence 3, 4 and 6, all faces quads.

@@ -1,5 +1,7 @@
 #include "support/test_meshes.h"
 
+#include <cmath>
+#include <numbers>
 #include <random>
 
 namespace subdiv::test {
@@ -57,6 +59,23 @@ PolygonMesh with_random_heights(PolygonMesh mesh, unsigned seed) {
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> height(-1.0, 1.0);
   for (Vec3& p : mesh.positions) p.z = height(random);
+  return mesh;
+}
+
+PolygonMesh bipyramid(int n) {
+  PolygonMesh mesh;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n;
+    mesh.positions.push_back({std::cos(a), std::sin(a), 0.0});
+  }
+  mesh.positions.push_back({0, 0, 1.2});
+  mesh.positions.push_back({0, 0, -0.9});
+  const auto top = static_cast<Index>(n), bottom = static_cast<Index>(n + 1);
+  for (int i = 0; i < n; ++i) {
+    const auto a = static_cast<Index>(i), b = static_cast<Index>((i + 1) % n);
+    mesh.add_face({a, b, top});
+    mesh.add_face({b, a, bottom});
+  }
   return mesh;
 }
 

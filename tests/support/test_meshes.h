@@ -19,6 +19,9 @@ PolygonMesh triangle_grid(int n, int m);
 PolygonMesh box_spline_grid(int n, int m);
 /// Regular tetrahedron.
 PolygonMesh tetrahedron();
+/// A closed double pyramid over a regular n-gon (n >= 3) in z = 0, apexes at
+/// z = 1.2 and -0.9: apexes of valence n, the equator's vertices of valence 4.
+PolygonMesh bipyramid(int n);
 /// The mesh with every vertex moved by up to 0.1 along each axis, the same
 /// for the same seed (std::mt19937).
 PolygonMesh jittered(PolygonMesh mesh, unsigned seed);
