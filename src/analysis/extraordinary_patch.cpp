@@ -177,10 +177,13 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(sp
     if (rows.empty()) inconsistent(valence_, "a regular child has no regular patch");
     children_[k] = {rows_over_ring(table, rows, column_of, size, valence_), frames[k].origin, frames[k].axis};
   }
+  Eigen::MatrixXd power = Eigen::MatrixXd::Identity(size, size);  // A^n
+  for (int n = 0; n < kCachedLevels; ++n, power = A_ * power)
+    for (const Child& regular : children_) level_rows_.emplace_back(regular.rows * power);
 
   // The corner's limit: row 0 (the centre) of A^256, by repeated squaring;
   // the subdominant eigenvalues' 256th powers are below 1e-40.
-  Eigen::MatrixXd power = A_;
+  power = A_;
   for (int i = 0; i < 8; ++i) power = power * power;
   limit_row_ = power.row(0).transpose();
 
@@ -207,7 +210,7 @@ std::size_t ExtraordinaryPatch::child_holding(double s, double t) const noexcept
   return s >= 0.5 ? 0 : (t >= 0.5 ? 1 : 2);
 }
 
-PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s, double t) const {
+PatchPoint ExtraordinaryPatch::evaluate(std::span<const Vec3> ring, double s, double t) const {
   const auto size = static_cast<Eigen::Index>(A_.rows());
   if (static_cast<Eigen::Index>(ring.size()) != size) {
     throw InvalidInputError("extraordinary patch: " + std::to_string(ring.size()) + " control points for a ring of " +
@@ -219,14 +222,9 @@ PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s,
     throw InvalidInputError("extraordinary patch: (" + std::to_string(s) + ", " + std::to_string(t) +
                             ") is outside the face");
   }
-  Eigen::MatrixXd control(size, 3);
-  for (Eigen::Index i = 0; i < size; ++i) {
-    for (int d = 0; d < 3; ++d) control(i, d) = ring[static_cast<std::size_t>(i)][d];
-  }
-  const auto to_vec = [](const Eigen::RowVector3d& v) { return Vec3{v(0), v(1), v(2)}; };
-  PatchPoint point{};
   if (s == 0.0 && t == 0.0) {
-    point.position = to_vec(limit_row_.transpose() * control);
+    PatchPoint point{};
+    for (Eigen::Index i = 0; i < size; ++i) point.position += limit_row_(i) * ring[static_cast<std::size_t>(i)];
     return point;
   }
   // Level n: the deepest centre child that holds (s, t) outside its own
@@ -240,8 +238,59 @@ PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s,
   const std::size_t k = child_holding(s, t);
   const Child& child = children_[k];
   const double u = (s - child.origin[0]) / child.axis[0], v = (t - child.origin[1]) / child.axis[1];
+  PatchPoint point = n < kCachedLevels ? evaluate_cached(ring, n, k, u, v) : evaluate_deep(ring, n, k, u, v);
+  // The child frame's chain factors (1 / axis steps) on the derivatives.
+  const double cu = 1.0 / child.axis[0], cv = 1.0 / child.axis[1];
+  point.du = cu * point.du;
+  point.dv = cv * point.dv;
+  point.duu = (cu * cu) * point.duu;
+  point.duv = (cu * cv) * point.duv;
+  point.dvv = (cv * cv) * point.dvv;
+  return point;
+}
+
+PatchPoint ExtraordinaryPatch::evaluate_cached(std::span<const Vec3> ring, int level, std::size_t k, double u,
+                                               double v) const {
+  // The child's regular patch points, A_k A^n times the ring; then its
+  // derivatives in F's level-n frame, 2^n per order.
+  const auto& rows = level_rows_[3 * static_cast<std::size_t>(level) + k];
+  const auto patch_points = [&](auto& points) {
+    for (std::size_t r = 0; r < points.size(); ++r) {
+      const double* row = rows.data() + r * ring.size();
+      Vec3 p{};
+      for (std::size_t i = 0; i < ring.size(); ++i) p += row[i] * ring[i];
+      points[r] = p;
+    }
+  };
+  PatchPoint point;
+  if (split_ == SplitRule::quad) {
+    std::array<Vec3, 16> points;
+    patch_points(points);
+    point = bicubic_bspline_point([&](std::size_t i) { return points[i]; }, u, v);
+  } else {
+    std::array<Vec3, 12> points;
+    patch_points(points);
+    point = box_spline_point(points, u, v);
+  }
+  const double first = std::ldexp(1.0, level), second = first * first;
+  point.du = first * point.du;
+  point.dv = first * point.dv;
+  point.duu = second * point.duu;
+  point.duv = second * point.duv;
+  point.dvv = second * point.dvv;
+  return point;
+}
+
+PatchPoint ExtraordinaryPatch::evaluate_deep(std::span<const Vec3> ring, int level, std::size_t k, double u,
+                                             double v) const {
+  const auto size = static_cast<Eigen::Index>(A_.rows());
+  Eigen::MatrixXd control(size, 3);
+  for (Eigen::Index i = 0; i < size; ++i) {
+    for (int d = 0; d < 3; ++d) control(i, d) = ring[static_cast<std::size_t>(i)][d];
+  }
+  const auto to_vec = [](const Eigen::RowVector3d& r) { return Vec3{r(0), r(1), r(2)}; };
   std::array<std::vector<double>, 6> weights;
-  if (quads) {
+  if (split_ == SplitRule::quad) {
     const PatchWeights<16> b = bicubic_bspline_weights(u, v);
     weights = {{{b.value.begin(), b.value.end()}, {b.du.begin(), b.du.end()}, {b.dv.begin(), b.dv.end()},
                 {b.duu.begin(), b.duu.end()}, {b.duv.begin(), b.duv.end()}, {b.dvv.begin(), b.dvv.end()}}};
@@ -256,9 +305,8 @@ PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s,
   // derivative annihilates analytically (the constant one, eigenvalue 1;
   // any whose coefficient is rounding noise, below 1e-13 of the family's
   // largest) are dropped: near the corner they would be rounding errors
-  // multiplied by 2^(n d). `chain` is the child frame's factor (1 / axis
-  // steps) for the family's derivatives.
-  const auto family = [&](const std::vector<double>& family_weights, int order, double chain) {
+  // multiplied by 2^(n d).
+  const auto family = [&](const std::vector<double>& family_weights, int order) {
     const Eigen::Map<const Eigen::RowVectorXd> row(family_weights.data(), static_cast<Eigen::Index>(family_weights.size()));
     const double growth = std::ldexp(1.0, order);
     Eigen::RowVectorXd over_ring;
@@ -268,23 +316,17 @@ PatchPoint ExtraordinaryPatch::evaluate(const std::vector<Vec3>& ring, double s,
       for (Eigen::Index i = 0; i < size; ++i) {
         const bool annihilated = order > 0 && (std::abs(eigenvalues_(i) - 1.0) < 1e-12 ||
                                                std::abs(in_basis(i)) < 1e-13 * largest);
-        in_basis(i) = annihilated ? 0.0 : in_basis(i) * std::pow(growth * eigenvalues_(i), n);
+        in_basis(i) = annihilated ? 0.0 : in_basis(i) * std::pow(growth * eigenvalues_(i), level);
       }
       over_ring = (in_basis * V_inverse_).real();
     } else {
-      over_ring = row * child.rows;
-      for (int i = 0; i < n; ++i) over_ring = growth * (over_ring * A_);
+      over_ring = row * children_[k].rows;
+      for (int i = 0; i < level; ++i) over_ring = growth * (over_ring * A_);
     }
-    return to_vec(chain * (over_ring * control));
+    return to_vec(over_ring * control);
   };
-  const double cu = 1.0 / child.axis[0], cv = 1.0 / child.axis[1];
-  point.position = family(weights[0], 0, 1.0);
-  point.du = family(weights[1], 1, cu);
-  point.dv = family(weights[2], 1, cv);
-  point.duu = family(weights[3], 2, cu * cu);
-  point.duv = family(weights[4], 2, cu * cv);
-  point.dvv = family(weights[5], 2, cv * cv);
-  return point;
+  return {family(weights[0], 0), family(weights[1], 1), family(weights[2], 1),
+          family(weights[3], 2), family(weights[4], 2), family(weights[5], 2)};
 }
 
 }  // namespace subdiv

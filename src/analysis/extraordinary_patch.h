@@ -18,13 +18,19 @@
 /// s + t, in [2^-(n+1), 2^-n)) lies in a regular child k of level n: its
 /// value is b(s', t') A_k A^n C with A^n = V Lambda^n V^-1 from the
 /// eigen-decomposition of A (the powers are taken by repeated products where
-/// A is not diagonalizable to working accuracy). The quad split's children
+/// A is not diagonalizable to working accuracy). For the first
+/// kCachedLevels levels the rows A_k A^n are kept (products, no eigenbasis):
+/// a point there costs one regular patch over the ring's image, which is
+/// nearly every point of F. The quad split's children
 /// keep F's frame at half scale; the triangle split's middle child is F's
 /// frame turned a half turn.
 #include <Eigen/Core>
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
+
+#include "analysis/patch_basis.h"
 
 #include "subdiv/core/types.h"
 #include "subdiv/mesh/topology.h"
@@ -51,11 +57,6 @@ struct FaceRing {
 ///   vertex with one closed fan.
 /// \pre \p corner is in [0, topology.corner_count()) (unchecked).
 std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner);
-
-/// The limit surface and its derivatives at one parameter of a patch.
-struct PatchPoint {
-  Vec3 position, du, dv, duu, duv, dvv;
-};
 
 /// The patch at an extraordinary corner of valence N, read off the scheme's
 /// refinement of the ring mesh (see the file comment): Catmull-Clark for the
@@ -99,7 +100,12 @@ class ExtraordinaryPatch {
   /// \return position and derivatives with respect to (s, t).
   /// \throws InvalidInputError for a ring of another size, or (s, t) outside
   ///   F (NaN included).
-  PatchPoint evaluate(const std::vector<Vec3>& ring, double s, double t) const;
+  PatchPoint evaluate(std::span<const Vec3> ring, double s, double t) const;
+
+  /// The levels n whose children's rows over the ring, A_k A^n, are kept:
+  /// (s, t) farther than 2^-kCachedLevels from the corner. Eight levels cost
+  /// 24 matrices of 16 (12) x K per valence.
+  static constexpr int kCachedLevels = 8;
 
  private:
   /// A regular child: its patch's rows over the ring, and its frame (its
@@ -110,11 +116,15 @@ class ExtraordinaryPatch {
     std::array<double, 2> axis{};
   };
   std::size_t child_holding(double s, double t) const noexcept;
+  PatchPoint evaluate_cached(std::span<const Vec3> ring, int level, std::size_t k, double u, double v) const;
+  PatchPoint evaluate_deep(std::span<const Vec3> ring, int level, std::size_t k, double u, double v) const;
 
   SplitRule split_ = SplitRule::quad;
   int valence_ = 0;
   Eigen::MatrixXd A_;              // K x K
   std::array<Child, 3> children_;
+  // A_k A^n for level n < kCachedLevels, at [3 n + k].
+  std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> level_rows_;
   std::vector<int> signature_;
   std::vector<Vec3> layout_;
   bool eigenbasis_ = false;

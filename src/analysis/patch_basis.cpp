@@ -3,10 +3,7 @@
 namespace subdiv {
 namespace {
 
-/// The uniform cubic B-spline basis on [0, 1] and its two derivatives.
-struct CubicBasis {
-  std::array<double, 4> value, d1, d2;
-};
+}  // namespace
 
 CubicBasis cubic_bspline(double t) noexcept {
   const double s = 1.0 - t;
@@ -17,6 +14,8 @@ CubicBasis cubic_bspline(double t) noexcept {
   b.d2 = {s, 3.0 * t - 2.0, -3.0 * t + 1.0, t};
   return b;
 }
+
+namespace {
 
 /// The quartic monomials u^a v^b with a + b <= 4, in Stam's order:
 /// 1, u, v, uu, uv, vv, uuu, uuv, uvv, vvv, uuuu, uuuv, uuvv, uvvv, vvvv.
@@ -98,6 +97,23 @@ PatchWeights<12> box_spline_weights(double u, double v) noexcept {
   box_spline_derivative(u, v, 1, 1, w.duv);
   box_spline_derivative(u, v, 0, 2, w.dvv);
   return w;
+}
+
+PatchPoint box_spline_point(const std::array<Vec3, 12>& points, double u, double v) noexcept {
+  // The patch as a polynomial: its coefficient of each monomial, from the
+  // table's (integer, mostly zero) entries.
+  std::array<Vec3, 15> coefficient{};
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = 0; j < coefficient.size(); ++j)
+      if (kBoxSplineTable[i][j] != 0) coefficient[j] += static_cast<double>(kBoxSplineTable[i][j]) * points[i];
+  }
+  const auto derivative = [&](int ku, int kv) {
+    const std::array<double, 15> m = monomial_derivatives(u, v, ku, kv);
+    Vec3 sum{};
+    for (std::size_t j = 0; j < m.size(); ++j) sum += m[j] * coefficient[j];
+    return (1.0 / 12.0) * sum;
+  };
+  return {derivative(0, 0), derivative(1, 0), derivative(0, 1), derivative(2, 0), derivative(1, 1), derivative(0, 2)};
 }
 
 }  // namespace subdiv

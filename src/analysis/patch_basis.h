@@ -18,9 +18,21 @@
 ///   surfaces", SIGGRAPH 1998): a 12 x 15 table over the quartic monomials,
 ///   differentiated monomial by monomial here. The tests check them against
 ///   Loop's own refinement and limit masks.
+///
+/// The *_point functions evaluate a patch over its control points directly,
+/// in fewer operations than weights times points (the bicubic one as a
+/// tensor product): the evaluators' inner loop.
 #include <array>
+#include <cstddef>
+
+#include "subdiv/core/types.h"
 
 namespace subdiv {
+
+/// The limit surface and its derivatives at one parameter of a patch.
+struct PatchPoint {
+  Vec3 position, du, dv, duu, duv, dvv;
+};
 
 /// Weights of N control points and their derivatives at one (u, v).
 template <int N>
@@ -50,5 +62,57 @@ PatchWeights<16> bicubic_bspline_weights(double u, double v) noexcept;
 /// \param v the second parameter.
 /// \return 12 weights in the order of kBoxSplineLattice.
 PatchWeights<12> box_spline_weights(double u, double v) noexcept;
+
+/// The uniform cubic B-spline basis at t and its first and second
+/// derivatives.
+struct CubicBasis {
+  std::array<double, 4> value, d1, d2;
+};
+
+/// The uniform cubic B-spline basis on [0, 1] (any real t evaluates the
+/// polynomials).
+/// \param t the parameter.
+/// \return the four basis functions and their derivatives.
+CubicBasis cubic_bspline(double t) noexcept;
+
+/// The bicubic B-spline patch at (u, v) as a tensor product: equal to
+/// bicubic_bspline_weights applied to the points, up to rounding.
+/// \param point `point(i)` is control point i (0..15, in
+///   bicubic_bspline_weights' order); read once each.
+/// \param u the first parameter.
+/// \param v the second parameter.
+/// \return position and derivatives with respect to (u, v).
+template <class Points>
+PatchPoint bicubic_bspline_point(const Points& point, double u, double v) noexcept {
+  const CubicBasis bu = cubic_bspline(u);
+  const CubicBasis bv = cubic_bspline(v);
+  PatchPoint p{};
+  for (std::size_t j = 0; j < 4; ++j) {
+    // Row j along u: the curve, its first and its second derivative.
+    Vec3 curve{}, d1{}, d2{};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Vec3 c = point(i + 4 * j);
+      curve += bu.value[i] * c;
+      d1 += bu.d1[i] * c;
+      d2 += bu.d2[i] * c;
+    }
+    p.position += bv.value[j] * curve;
+    p.du += bv.value[j] * d1;
+    p.duu += bv.value[j] * d2;
+    p.dv += bv.d1[j] * curve;
+    p.duv += bv.d1[j] * d1;
+    p.dvv += bv.d2[j] * curve;
+  }
+  return p;
+}
+
+/// The quartic box-spline patch over 12 control points (in
+/// kBoxSplineLattice's order) at (u, v): equal to box_spline_weights
+/// applied to the points, up to rounding.
+/// \param points the 12 control points.
+/// \param u the first parameter.
+/// \param v the second parameter.
+/// \return position and derivatives with respect to (u, v).
+PatchPoint box_spline_point(const std::array<Vec3, 12>& points, double u, double v) noexcept;
 
 }  // namespace subdiv

@@ -118,7 +118,7 @@ class LimitEvaluator::Builder {
 
   void add_leaf(int level, const Frame& frame, const ExtraordinaryPatch* patch, std::span<const Index> points,
                 Vec3 corner_normal = {}) {
-    out_.leaves_.push_back({frame, patch, out_.control_.size(), corner_normal});
+    out_.leaves_.push_back({frame, detail::inverse_of(frame), patch, out_.control_.size(), corner_normal});
     out_.control_.insert(out_.control_.end(), points.begin(), points.end());
     leaf_level_.push_back(level);
   }
@@ -256,7 +256,7 @@ LimitPoint LimitEvaluator::evaluate(Index face, double u, double v) const {
   detail::PatchParameter best_at{};
   double best_outside = std::numeric_limits<double>::infinity();
   for (std::size_t i = first; i < last; ++i) {
-    const detail::PatchParameter at = detail::to_patch(leaves_[i].frame, u, v);
+    const detail::PatchParameter at = detail::to_patch(leaves_[i].frame, leaves_[i].inverse, u, v);
     const double outside = detail::distance_outside(at, triangles_);
     if (outside < best_outside) {
       best = i;
@@ -266,33 +266,32 @@ LimitPoint LimitEvaluator::evaluate(Index face, double u, double v) const {
     }
   }
   const detail::PatchParameter at = detail::clamp_into(best_at, triangles_);
-  return detail::to_ptex(leaves_[best].frame, evaluate_leaf(leaves_[best], at.s, at.t));
+  LimitPoint point = evaluate_leaf(leaves_[best], at.s, at.t);
+  detail::to_ptex(leaves_[best].inverse, point);
+  return point;
 }
 
 LimitPoint LimitEvaluator::evaluate_leaf(const Leaf& leaf, double s, double t) const {
   const Index* control = control_.data() + leaf.first_control;
-  LimitPoint p{};
-  if (leaf.extraordinary) {
-    std::vector<Vec3> ring(static_cast<std::size_t>(leaf.extraordinary->size()));
-    for (std::size_t i = 0; i < ring.size(); ++i) ring[i] = positions_[static_cast<std::size_t>(control[i])];
-    const PatchPoint q = leaf.extraordinary->evaluate(ring, s, t);
-    p = {q.position, q.du, q.dv, q.duu, q.duv, q.dvv, {}};
-    if (s == 0.0 && t == 0.0) p.normal = leaf.corner_normal;
-    return p;
-  }
-  const auto apply = [&](const auto& w) {
-    for (std::size_t i = 0; i < w.value.size(); ++i) {
-      const Vec3 c = positions_[static_cast<std::size_t>(control[i])];
-      p.position += w.value[i] * c;
-      p.du += w.du[i] * c;
-      p.dv += w.dv[i] * c;
-      p.duu += w.duu[i] * c;
-      p.duv += w.duv[i] * c;
-      p.dvv += w.dvv[i] * c;
-    }
+  const auto gather = [&](auto& points) {
+    for (std::size_t i = 0; i < points.size(); ++i) points[i] = positions_[static_cast<std::size_t>(control[i])];
   };
-  if (triangles_) apply(box_spline_weights(s, t));
-  else apply(bicubic_bspline_weights(s, t));
+  PatchPoint q;
+  if (leaf.extraordinary) {
+    // One buffer per thread: no allocation per evaluation.
+    thread_local std::vector<Vec3> ring;
+    ring.resize(static_cast<std::size_t>(leaf.extraordinary->size()));
+    gather(ring);
+    q = leaf.extraordinary->evaluate(ring, s, t);
+  } else if (triangles_) {
+    std::array<Vec3, 12> points;
+    gather(points);
+    q = box_spline_point(points, s, t);
+  } else {
+    q = bicubic_bspline_point([&](std::size_t i) { return positions_[static_cast<std::size_t>(control[i])]; }, s, t);
+  }
+  LimitPoint p{q.position, q.du, q.dv, q.duu, q.duv, q.dvv, {}};
+  if (leaf.extraordinary && s == 0.0 && t == 0.0) p.normal = leaf.corner_normal;
   return p;
 }
 

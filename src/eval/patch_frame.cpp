@@ -57,10 +57,14 @@ Frame triangle_child_frame(const Frame& face, int k) noexcept {
   return frame_of(p[i], p[(i + 1) % 3], p[(i + 2) % 3], 0.5);
 }
 
-PatchParameter to_patch(const Frame& frame, double u, double v) noexcept {
-  const double du = u - frame.origin[0], dv = v - frame.origin[1];
+FrameInverse inverse_of(const Frame& frame) noexcept {
   const double det = frame.axis_s[0] * frame.axis_t[1] - frame.axis_t[0] * frame.axis_s[1];
-  return {(du * frame.axis_t[1] - dv * frame.axis_t[0]) / det, (frame.axis_s[0] * dv - frame.axis_s[1] * du) / det};
+  return {frame.axis_t[1] / det, -frame.axis_t[0] / det, -frame.axis_s[1] / det, frame.axis_s[0] / det};
+}
+
+PatchParameter to_patch(const Frame& frame, const FrameInverse& inverse, double u, double v) noexcept {
+  const double du = u - frame.origin[0], dv = v - frame.origin[1];
+  return {inverse[0] * du + inverse[1] * dv, inverse[2] * du + inverse[3] * dv};
 }
 
 double distance_outside(PatchParameter at, bool triangle) noexcept {
@@ -80,25 +84,22 @@ PatchParameter clamp_into(PatchParameter at, bool triangle) noexcept {
   return at;
 }
 
-LimitPoint to_ptex(const Frame& frame, const LimitPoint& p) noexcept {
-  // s = k00 du + k01 dv, t = k10 du + k11 dv: the frame's inverse.
-  const double det = frame.axis_s[0] * frame.axis_t[1] - frame.axis_t[0] * frame.axis_s[1];
-  const double k00 = frame.axis_t[1] / det, k01 = -frame.axis_t[0] / det;
-  const double k10 = -frame.axis_s[1] / det, k11 = frame.axis_s[0] / det;
-  LimitPoint q;
-  q.position = p.position;
-  q.du = k00 * p.du + k10 * p.dv;
-  q.dv = k01 * p.du + k11 * p.dv;
-  q.duu = (k00 * k00) * p.duu + (2.0 * k00 * k10) * p.duv + (k10 * k10) * p.dvv;
-  q.duv = (k00 * k01) * p.duu + (k00 * k11 + k01 * k10) * p.duv + (k10 * k11) * p.dvv;
-  q.dvv = (k01 * k01) * p.duu + (2.0 * k01 * k11) * p.duv + (k11 * k11) * p.dvv;
-  q.normal = p.normal;
-  if (q.normal == Vec3{}) {
-    const Vec3 n = cross(q.du, q.dv);
-    const double length = norm(n);
-    if (length > 0.0) q.normal = (1.0 / length) * n;
+void to_ptex(const FrameInverse& inverse, LimitPoint& p) noexcept {
+  // d/du = ds/du d/ds + dt/du d/dt, and so on: k_ij the inverse's entries.
+  const auto [k00, k01, k10, k11] = inverse;
+  if (!(k00 == 1.0 && k01 == 0.0 && k10 == 0.0 && k11 == 1.0)) {  // else the ptex face itself
+    const Vec3 du = p.du, dv = p.dv, duu = p.duu, duv = p.duv, dvv = p.dvv;
+    p.du = k00 * du + k10 * dv;
+    p.dv = k01 * du + k11 * dv;
+    p.duu = (k00 * k00) * duu + (2.0 * k00 * k10) * duv + (k10 * k10) * dvv;
+    p.duv = (k00 * k01) * duu + (k00 * k11 + k01 * k10) * duv + (k10 * k11) * dvv;
+    p.dvv = (k01 * k01) * duu + (2.0 * k01 * k11) * duv + (k11 * k11) * dvv;
   }
-  return q;
+  if (p.normal == Vec3{}) {
+    const Vec3 n = cross(p.du, p.dv);
+    const double length = norm(n);
+    if (length > 0.0) p.normal = (1.0 / length) * n;
+  }
 }
 
 }  // namespace subdiv::detail

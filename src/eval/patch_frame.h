@@ -5,6 +5,8 @@
 // origin + axis_t (a quad's corner 2 at origin + axis_s + axis_t). Every map
 // here keeps the orientation (positive determinant).
 
+#include <array>
+
 #include "subdiv/eval/limit_evaluator.h"
 
 namespace subdiv::detail {
@@ -31,8 +33,15 @@ Frame quad_child_frame(const Frame& face, int k) noexcept;
 /// previous]; child 3 the middle one, [midpoint 01, midpoint 12, midpoint 20].
 Frame triangle_child_frame(const Frame& face, int k) noexcept;
 
-/// (s, t) of the ptex parameter (u, v) in `frame`.
-PatchParameter to_patch(const Frame& frame, double u, double v) noexcept;
+/// A frame's inverse, row-major: (s, t) = J ((u, v) - origin). Kept per
+/// patch, so that evaluation divides by nothing.
+using FrameInverse = std::array<double, 4>;
+
+/// The inverse of `frame` (see FrameInverse).
+FrameInverse inverse_of(const Frame& frame) noexcept;
+
+/// (s, t) of the ptex parameter (u, v) in `frame`, whose inverse is `inverse`.
+PatchParameter to_patch(const Frame& frame, const FrameInverse& inverse, double u, double v) noexcept;
 
 /// How far (s, t) lies outside the patch's domain (the unit square, or the
 /// triangle s, t >= 0, s + t <= 1) in its own parameters; 0 inside.
@@ -41,9 +50,10 @@ double distance_outside(PatchParameter at, bool triangle) noexcept;
 /// The nearest point of the domain (the point itself inside).
 PatchParameter clamp_into(PatchParameter at, bool triangle) noexcept;
 
-/// A patch's point with its derivatives taken with respect to the ptex
-/// parameter (chain rule through the frame's inverse), and its normal: the
-/// one given where set (an extraordinary corner), else du x dv normalised.
-LimitPoint to_ptex(const Frame& frame, const LimitPoint& in_patch) noexcept;
+/// Turns a patch's point, in place, into the ptex face's: its derivatives
+/// with respect to the ptex parameter (chain rule through the frame's
+/// inverse), and its normal: the one given where set (an extraordinary
+/// corner), else du x dv normalised.
+void to_ptex(const FrameInverse& inverse, LimitPoint& point) noexcept;
 
 }  // namespace subdiv::detail

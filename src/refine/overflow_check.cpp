@@ -19,10 +19,11 @@ namespace {
 // coordinate, with no early exit, so the loop vectorizes (NaN compares false).
 bool block_is_finite(const Vec3* begin, const Vec3* end) {
   constexpr double kMax = std::numeric_limits<double>::max();
-  bool finite = true;
+  unsigned finite = 1;
   for (const Vec3* p = begin; p != end; ++p)
-    finite &= (std::abs(p->x) <= kMax) & (std::abs(p->y) <= kMax) & (std::abs(p->z) <= kMax);
-  return finite;
+    finite &= static_cast<unsigned>(std::abs(p->x) <= kMax) & static_cast<unsigned>(std::abs(p->y) <= kMax) &
+              static_cast<unsigned>(std::abs(p->z) <= kMax);
+  return finite != 0;
 }
 
 }  // namespace

@@ -149,9 +149,11 @@ TEST(ExtraordinaryPatch, DerivativesMatchFiniteDifferences) {
   for (const int valence : {split == SplitRule::quad ? 3 : 4, 5, 8}) {
     const ExtraordinaryPatch patch(split, valence);
     const std::vector<Vec3> ring = control_points(model(split, valence, random));
-    // Points in each regular child, at several levels (the last two in the
-    // triangle's middle child).
-    for (const auto& [s, t] : std::vector<std::array<double, 2>>{{0.7, 0.2}, {0.2, 0.6}, {0.05, 0.02}, {0.3, 0.3}, {0.03, 0.04}}) {
+    // Points in each regular child, at several levels (0.3, 0.3 and 0.03,
+    // 0.04 in the triangle's middle child; the last two deeper than the
+    // cached levels, through the eigenbasis).
+    for (const auto& [s, t] : std::vector<std::array<double, 2>>{
+             {0.7, 0.2}, {0.2, 0.6}, {0.05, 0.02}, {0.3, 0.3}, {0.03, 0.04}, {0.003, 0.001}, {0.0005, 0.0011}}) {
       const double h = 1e-6 * std::max(s, t);
       const PatchPoint p = patch.evaluate(ring, s, t);
       const PatchPoint ps = patch.evaluate(ring, s + h, t), ms = patch.evaluate(ring, s - h, t);
@@ -165,6 +167,44 @@ TEST(ExtraordinaryPatch, DerivativesMatchFiniteDifferences) {
       EXPECT_LT(norm(p.dvv - (1.0 / (2 * h)) * (pt.dv - mt.dv)), 1e-5 * second) << valence << " (" << s << ", " << t << ")";
     }
   }
+  }
+}
+
+/// Below the cached levels the patch goes through the eigenbasis; there it
+/// must equal the cached route on the ring subdivided kCachedLevels times
+/// (A^L C, by products), at (2^L s, 2^L t) with derivatives of order d
+/// scaled by 2^(L d): the patch's self-similarity, through both routes.
+TEST(ExtraordinaryPatch, DeepLevelsEqualTheCachedRouteOnTheSubdividedRing) {
+  std::mt19937 random(11);
+  constexpr int L = ExtraordinaryPatch::kCachedLevels;
+  for (const SplitRule split : {SplitRule::quad, SplitRule::triangle}) {
+    for (const int valence : {split == SplitRule::quad ? 3 : 4, 5, 8, 12}) {
+      const ExtraordinaryPatch patch(split, valence);
+      const std::vector<Vec3> ring = control_points(model(split, valence, random));
+      Eigen::MatrixXd power = Eigen::MatrixXd::Identity(patch.size(), patch.size());
+      for (int i = 0; i < L; ++i) power = patch.subdivision_matrix() * power;
+      std::vector<Vec3> deeper(ring.size());
+      for (std::size_t r = 0; r < ring.size(); ++r)
+        for (std::size_t c = 0; c < ring.size(); ++c)
+          deeper[r] += power(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) * ring[c];
+      const double first = std::ldexp(1.0, L), second = first * first;
+      for (int level = L; level <= L + 4; ++level) {
+        for (const auto& [s0, t0] : std::vector<std::array<double, 2>>{{0.7, 0.2}, {0.2, 0.6}, {0.3, 0.3}}) {
+          const double s = std::ldexp(s0, -level), t = std::ldexp(t0, -level);
+          const PatchPoint deep = patch.evaluate(ring, s, t);
+          const PatchPoint cached = patch.evaluate(deeper, first * s, first * t);
+          const std::string where = "valence " + std::to_string(valence) + " level " + std::to_string(level);
+          EXPECT_LT(norm(deep.position - cached.position), 1e-12) << where;
+          const double d1 = norm(deep.du) + norm(deep.dv);
+          EXPECT_LT(norm(deep.du - first * cached.du), 1e-9 * d1) << where;
+          EXPECT_LT(norm(deep.dv - first * cached.dv), 1e-9 * d1) << where;
+          const double d2 = norm(deep.duu) + norm(deep.duv) + norm(deep.dvv);
+          EXPECT_LT(norm(deep.duu - second * cached.duu), 1e-8 * d2) << where;
+          EXPECT_LT(norm(deep.duv - second * cached.duv), 1e-8 * d2) << where;
+          EXPECT_LT(norm(deep.dvv - second * cached.dvv), 1e-8 * d2) << where;
+        }
+      }
+    }
   }
 }
 

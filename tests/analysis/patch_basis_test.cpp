@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "subdiv/analysis/limit.h"
@@ -156,6 +157,38 @@ TEST(PatchBasis, BicubicIsCatmullClarksLimit) {
 
 TEST(PatchBasis, BoxSplineIsLoopsLimit) {
   expect_patch_is_the_limit<12>("loop", true, box_spline_weights, lattice_point);
+}
+
+/// The evaluators' direct routes (a tensor product, a polynomial) equal the
+/// weights applied to random control points.
+TEST(PatchBasis, DirectPatchPointsEqualTheWeights) {
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  const auto random_point = [&] { return Vec3{coordinate(random), coordinate(random), coordinate(random)}; };
+  const auto expect_equal = [](const PatchPoint& direct, const auto& w, const auto& points, double u, double v) {
+    PatchPoint weighted{};
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      weighted.position += w.value[i] * points[i];
+      weighted.du += w.du[i] * points[i];
+      weighted.dv += w.dv[i] * points[i];
+      weighted.duu += w.duu[i] * points[i];
+      weighted.duv += w.duv[i] * points[i];
+      weighted.dvv += w.dvv[i] * points[i];
+    }
+    const std::array<std::pair<Vec3, Vec3>, 6> pairs = {{{direct.position, weighted.position}, {direct.du, weighted.du},
+                                                         {direct.dv, weighted.dv}, {direct.duu, weighted.duu},
+                                                         {direct.duv, weighted.duv}, {direct.dvv, weighted.dvv}}};
+    for (const auto& [a, b] : pairs) EXPECT_LT(norm(a - b), 1e-13) << "at (" << u << ", " << v << ")";
+  };
+  for (const auto& [u, v] : kParameters) {
+    std::array<Vec3, 16> grid;
+    for (Vec3& p : grid) p = random_point();
+    expect_equal(bicubic_bspline_point([&](std::size_t i) { return grid[i]; }, u, v), bicubic_bspline_weights(u, v),
+                 grid, u, v);
+    std::array<Vec3, 12> lattice;
+    for (Vec3& p : lattice) p = random_point();
+    expect_equal(box_spline_point(lattice, u, v), box_spline_weights(u, v), lattice, u, v);
+  }
 }
 
 }  // namespace

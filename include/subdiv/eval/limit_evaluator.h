@@ -25,6 +25,7 @@
 /// element named.
 
 #include <cstdint>
+#include <array>
 #include <map>
 #include <memory>
 #include <span>
@@ -141,6 +142,7 @@ class LimitEvaluator {
   /// extraordinary patch's ring size).
   struct Leaf {
     Frame frame;
+    std::array<double, 4> inverse{};  ///< (s, t) = inverse ((u, v) - frame.origin), row-major
     const ExtraordinaryPatch* extraordinary = nullptr;  ///< null: regular
     std::size_t first_control = 0;
     Vec3 corner_normal;  ///< extraordinary: the unit normal at the corner
