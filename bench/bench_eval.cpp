@@ -1,6 +1,7 @@
 // Exact limit evaluation (LimitEvaluator), one thread: points on regular
-// faces (a torus) and on faces at extraordinary vertices (a refined cube's
-// corners), 16 per face, position and all derivatives. The Bfr peer
+// faces (a torus), on faces at extraordinary vertices (a refined cube's
+// corners) and within 2^-10 of those vertices, 16 per face, position and
+// all derivatives. The Bfr peer
 // (bench_peer_bfr.cpp) evaluates the same points.
 
 #include <benchmark/benchmark.h>
@@ -14,9 +15,8 @@
 namespace subdiv::bench {
 namespace {
 
-void evaluate_points(benchmark::State& state, const PolygonMesh& mesh, const std::vector<Index>& faces) {
+void evaluate_points(benchmark::State& state, const PolygonMesh& mesh, const std::vector<SurfaceLocation>& at) {
   const LimitEvaluator evaluator(mesh, *find_scheme("catmull-clark"));
-  const std::vector<SurfaceLocation> at = points_in_faces(faces, 16);
   for (auto _ : state) {
     // One by one, as a caller's loop does (the batch call is parallel).
     Vec3 sum;
@@ -28,15 +28,23 @@ void evaluate_points(benchmark::State& state, const PolygonMesh& mesh, const std
 
 void BM_Eval_CatmullClark_Regular(benchmark::State& state) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
-  evaluate_points(state, mesh, all_faces(mesh));
+  evaluate_points(state, mesh, points_in_faces(all_faces(mesh), 16));
 }
 BENCHMARK(BM_Eval_CatmullClark_Regular)->Arg(64)->Unit(benchmark::kMillisecond);
 
 void BM_Eval_CatmullClark_Extraordinary(benchmark::State& state) {
   const PolygonMesh mesh = refined_cube(static_cast<int>(state.range(0)));
-  evaluate_points(state, mesh, faces_at_extraordinary_vertices(mesh));
+  evaluate_points(state, mesh, points_in_faces(faces_at_extraordinary_vertices(mesh), 16));
 }
 BENCHMARK(BM_Eval_CatmullClark_Extraordinary)->Arg(3)->Unit(benchmark::kMillisecond);
+
+// Within 2^-10 of the extraordinary corners: past the patches' cached
+// levels, every point goes through the eigenbasis.
+void BM_Eval_CatmullClark_NearCorner(benchmark::State& state) {
+  const PolygonMesh mesh = refined_cube(static_cast<int>(state.range(0)));
+  evaluate_points(state, mesh, points_near_extraordinary_corners(mesh, faces_at_extraordinary_vertices(mesh), 16, 0x1p-10));
+}
+BENCHMARK(BM_Eval_CatmullClark_NearCorner)->Arg(3)->Unit(benchmark::kMillisecond);
 
 void BM_Eval_CatmullClark_Prepare(benchmark::State& state) {
   const PolygonMesh mesh = refined_cube(static_cast<int>(state.range(0)));

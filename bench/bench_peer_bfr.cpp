@@ -1,4 +1,5 @@
-// OpenSubdiv's Bfr (libosd-dev) evaluating the points of bench_eval.cpp:
+// OpenSubdiv's Bfr (libosd-dev) evaluating the points of bench_eval.cpp
+// (near the corners, Bfr's isolation stops at its level and approximates):
 // per face a Surface is initialised and its patch points prepared (as Bfr's
 // tutorials do, once per face), then its 16 points evaluated with all
 // derivatives. The "Prepared" variants time the evaluations alone, the
@@ -43,9 +44,10 @@ double evaluate_face(const Bfr::Surface<double>& surface, const std::vector<doub
   return sum;
 }
 
-void bfr_points(benchmark::State& state, const PolygonMesh& mesh, const std::vector<Index>& faces, bool prepared) {
+// `at`: 16 points per face of `faces`, face after face.
+void bfr_points(benchmark::State& state, const PolygonMesh& mesh, const std::vector<Index>& faces,
+                const std::vector<SurfaceLocation>& at, bool prepared) {
   BfrMesh bfr(mesh);
-  const std::vector<SurfaceLocation> at = points_in_faces(faces, 16);
   const Bfr::Surface<double>::PointDescriptor desc(3);
   std::vector<Bfr::Surface<double>> surfaces(faces.size());
   std::vector<std::vector<double>> patches(faces.size());
@@ -69,15 +71,24 @@ void bfr_points(benchmark::State& state, const PolygonMesh& mesh, const std::vec
 
 void BM_Peer_Bfr_Eval_CatmullClark_Regular(benchmark::State& state) {
   const PolygonMesh mesh = torus(static_cast<int>(state.range(0)));
-  bfr_points(state, mesh, all_faces(mesh), state.range(1) != 0);
+  const std::vector<Index> faces = all_faces(mesh);
+  bfr_points(state, mesh, faces, points_in_faces(faces, 16), state.range(1) != 0);
 }
 BENCHMARK(BM_Peer_Bfr_Eval_CatmullClark_Regular)->Args({64, 0})->Args({64, 1})->Unit(benchmark::kMillisecond);
 
 void BM_Peer_Bfr_Eval_CatmullClark_Extraordinary(benchmark::State& state) {
   const PolygonMesh mesh = refined_cube(static_cast<int>(state.range(0)));
-  bfr_points(state, mesh, faces_at_extraordinary_vertices(mesh), state.range(1) != 0);
+  const std::vector<Index> faces = faces_at_extraordinary_vertices(mesh);
+  bfr_points(state, mesh, faces, points_in_faces(faces, 16), state.range(1) != 0);
 }
 BENCHMARK(BM_Peer_Bfr_Eval_CatmullClark_Extraordinary)->Args({3, 0})->Args({3, 1})->Unit(benchmark::kMillisecond);
+
+void BM_Peer_Bfr_Eval_CatmullClark_NearCorner(benchmark::State& state) {
+  const PolygonMesh mesh = refined_cube(static_cast<int>(state.range(0)));
+  const std::vector<Index> faces = faces_at_extraordinary_vertices(mesh);
+  bfr_points(state, mesh, faces, points_near_extraordinary_corners(mesh, faces, 16, 0x1p-10), state.range(1) != 0);
+}
+BENCHMARK(BM_Peer_Bfr_Eval_CatmullClark_NearCorner)->Args({3, 0})->Args({3, 1})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace subdiv::bench

@@ -34,6 +34,29 @@ std::vector<SurfaceLocation> points_in_faces(const std::vector<Index>& faces, in
   return at;
 }
 
+std::vector<SurfaceLocation> points_near_extraordinary_corners(const PolygonMesh& mesh, const std::vector<Index>& faces,
+                                                               int per_face, double reach) {
+  const MeshTopology t(mesh);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> near(0.0, reach);
+  // Ptex (u, v) of a quad's corners 0..3.
+  constexpr double kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  std::vector<SurfaceLocation> at;
+  at.reserve(faces.size() * static_cast<std::size_t>(per_face));
+  for (const Index f : faces) {
+    const auto vertices = t.face_vertices(f);
+    std::size_t corner = 0;
+    while (corner + 1 < vertices.size() && t.valence(vertices[corner]) == 4) ++corner;
+    if (t.valence(vertices[corner]) == 4) corner = 0;
+    const auto& [cu, cv] = kCorner[corner];
+    for (int k = 0; k < per_face; ++k) {
+      const double a = near(random), b = near(random);
+      at.push_back({f, cu == 0 ? a : 1.0 - a, cv == 0 ? b : 1.0 - b});
+    }
+  }
+  return at;
+}
+
 std::vector<Index> faces_at_extraordinary_vertices(const PolygonMesh& mesh) {
   const MeshTopology t(mesh);
   std::vector<Index> faces;

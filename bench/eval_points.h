@@ -17,6 +17,13 @@ PolygonMesh refined_cube(int levels);
 /// square), face after face.
 std::vector<SurfaceLocation> points_in_faces(const std::vector<Index>& faces, int per_face);
 
+/// `per_face` pseudo-random parameters in each listed quad within `reach`
+/// (in u and in v) of its first corner of valence other than 4: the points
+/// nearest an extraordinary vertex, which exact evaluation reaches through
+/// the eigenbasis. Faces without such a corner get points near corner 0.
+std::vector<SurfaceLocation> points_near_extraordinary_corners(const PolygonMesh& mesh, const std::vector<Index>& faces,
+                                                               int per_face, double reach);
+
 /// The faces of `mesh` with an extraordinary corner (valence other than 4).
 std::vector<Index> faces_at_extraordinary_vertices(const PolygonMesh& mesh);
 

@@ -180,6 +180,7 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(sp
   Eigen::MatrixXd power = Eigen::MatrixXd::Identity(size, size);  // A^n
   for (int n = 0; n < kCachedLevels; ++n, power = A_ * power)
     for (const Child& regular : children_) level_rows_.emplace_back(regular.rows * power);
+  step_ = power;
 
   // The corner's limit: row 0 (the centre) of A^256, by repeated squaring;
   // the subdominant eigenvalues' 256th powers are below 1e-40.
@@ -210,50 +211,90 @@ std::size_t ExtraordinaryPatch::child_holding(double s, double t) const noexcept
   return s >= 0.5 ? 0 : (t >= 0.5 ? 1 : 2);
 }
 
-PatchPoint ExtraordinaryPatch::evaluate(std::span<const Vec3> ring, double s, double t) const {
-  const auto size = static_cast<Eigen::Index>(A_.rows());
-  if (static_cast<Eigen::Index>(ring.size()) != size) {
+void ExtraordinaryPatch::check(std::span<const Vec3> ring, double s, double t) const {
+  if (static_cast<Eigen::Index>(ring.size()) != A_.rows()) {
     throw InvalidInputError("extraordinary patch: " + std::to_string(ring.size()) + " control points for a ring of " +
-                            std::to_string(size));
+                            std::to_string(A_.rows()));
   }
-  const bool quads = split_ == SplitRule::quad;
   // Written so that NaN fails too.
-  if (!(s >= 0.0 && t >= 0.0 && (quads ? std::max(s, t) : s + t) <= 1.0)) {
+  if (!(s >= 0.0 && t >= 0.0 && (split_ == SplitRule::quad ? std::max(s, t) : s + t) <= 1.0)) {
     throw InvalidInputError("extraordinary patch: (" + std::to_string(s) + ", " + std::to_string(t) +
                             ") is outside the face");
   }
-  if (s == 0.0 && t == 0.0) {
-    PatchPoint point{};
-    for (Eigen::Index i = 0; i < size; ++i) point.position += limit_row_(i) * ring[static_cast<std::size_t>(i)];
-    return point;
-  }
+}
+
+ExtraordinaryPatch::Location ExtraordinaryPatch::locate(double s, double t) const noexcept {
   // Level n: the deepest centre child that holds (s, t) outside its own
   // centre child; doubling is exact in floating point.
-  int n = 0;
+  const bool quads = split_ == SplitRule::quad;
+  Location at;
   while ((quads ? std::max(s, t) : s + t) < 0.5) {
     s *= 2.0;
     t *= 2.0;
-    ++n;
+    ++at.level;
   }
-  const std::size_t k = child_holding(s, t);
-  const Child& child = children_[k];
-  const double u = (s - child.origin[0]) / child.axis[0], v = (t - child.origin[1]) / child.axis[1];
-  PatchPoint point = n < kCachedLevels ? evaluate_cached(ring, n, k, u, v) : evaluate_deep(ring, n, k, u, v);
-  // The child frame's chain factors (1 / axis steps) on the derivatives.
-  const double cu = 1.0 / child.axis[0], cv = 1.0 / child.axis[1];
-  point.du = cu * point.du;
-  point.dv = cv * point.dv;
-  point.duu = (cu * cu) * point.duu;
-  point.duv = (cu * cv) * point.duv;
-  point.dvv = (cv * cv) * point.dvv;
-  return point;
+  at.child = child_holding(s, t);
+  const Child& child = children_[at.child];
+  at.u = (s - child.origin[0]) / child.axis[0];
+  at.v = (t - child.origin[1]) / child.axis[1];
+  return at;
 }
 
-PatchPoint ExtraordinaryPatch::evaluate_cached(std::span<const Vec3> ring, int level, std::size_t k, double u,
-                                               double v) const {
+Vec3 ExtraordinaryPatch::corner_limit(std::span<const Vec3> ring) const noexcept {
+  Vec3 limit{};
+  for (std::size_t i = 0; i < ring.size(); ++i) limit += limit_row_(static_cast<Eigen::Index>(i)) * ring[i];
+  return limit;
+}
+
+PatchPoint ExtraordinaryPatch::to_face(PatchPoint p, std::size_t child) const noexcept {
+  // The child frame's chain factors (1 / axis steps) on the derivatives.
+  const double cu = 1.0 / children_[child].axis[0], cv = 1.0 / children_[child].axis[1];
+  p.du = cu * p.du;
+  p.dv = cv * p.dv;
+  p.duu = (cu * cu) * p.duu;
+  p.duv = (cu * cv) * p.duv;
+  p.dvv = (cv * cv) * p.dvv;
+  return p;
+}
+
+PatchPoint ExtraordinaryPatch::evaluate(std::span<const Vec3> ring, double s, double t) const {
+  check(ring, s, t);
+  if (s == 0.0 && t == 0.0) return {corner_limit(ring), {}, {}, {}, {}, {}};
+  Location at = locate(s, t);
+  if (at.level < kCachedLevels) return to_face(evaluate_cached(ring, at), at.child);
+  // Deeper than the cached levels' reach: the eigenbasis, whose scaling
+  // keeps every derivative exact however close to the corner (below).
+  if (at.level >= 2 * kCachedLevels) return evaluate_in_eigenbasis(ring, s, t);
+  // One step of kCachedLevels levels: the ring moved so that the corner's
+  // limit is the origin (its constant component would otherwise lose the
+  // derivatives' digits), times A^kCachedLevels; then the cached levels.
+  const Vec3 limit = corner_limit(ring);
+  thread_local std::vector<Vec3> moved, stepped;
+  moved.resize(ring.size());
+  stepped.resize(ring.size());
+  for (std::size_t i = 0; i < ring.size(); ++i) moved[i] = ring[i] - limit;
+  for (std::size_t r = 0; r < ring.size(); ++r) {
+    const double* row = step_.data() + r * ring.size();
+    Vec3 p{};
+    for (std::size_t i = 0; i < ring.size(); ++i) p += row[i] * moved[i];
+    stepped[r] = p;
+  }
+  at.level -= kCachedLevels;
+  PatchPoint p = evaluate_cached(stepped, at);
+  const double first = std::ldexp(1.0, kCachedLevels), second = first * first;
+  p.position = limit + p.position;
+  p.du = first * p.du;
+  p.dv = first * p.dv;
+  p.duu = second * p.duu;
+  p.duv = second * p.duv;
+  p.dvv = second * p.dvv;
+  return to_face(p, at.child);
+}
+
+PatchPoint ExtraordinaryPatch::evaluate_cached(std::span<const Vec3> ring, const Location& at) const {
   // The child's regular patch points, A_k A^n times the ring; then its
   // derivatives in F's level-n frame, 2^n per order.
-  const auto& rows = level_rows_[3 * static_cast<std::size_t>(level) + k];
+  const auto& rows = level_rows_[3 * static_cast<std::size_t>(at.level) + at.child];
   const auto patch_points = [&](auto& points) {
     for (std::size_t r = 0; r < points.size(); ++r) {
       const double* row = rows.data() + r * ring.size();
@@ -266,13 +307,13 @@ PatchPoint ExtraordinaryPatch::evaluate_cached(std::span<const Vec3> ring, int l
   if (split_ == SplitRule::quad) {
     std::array<Vec3, 16> points;
     patch_points(points);
-    point = bicubic_bspline_point([&](std::size_t i) { return points[i]; }, u, v);
+    point = bicubic_bspline_point([&](std::size_t i) { return points[i]; }, at.u, at.v);
   } else {
     std::array<Vec3, 12> points;
     patch_points(points);
-    point = box_spline_point(points, u, v);
+    point = box_spline_point(points, at.u, at.v);
   }
-  const double first = std::ldexp(1.0, level), second = first * first;
+  const double first = std::ldexp(1.0, at.level), second = first * first;
   point.du = first * point.du;
   point.dv = first * point.dv;
   point.duu = second * point.duu;
@@ -281,8 +322,13 @@ PatchPoint ExtraordinaryPatch::evaluate_cached(std::span<const Vec3> ring, int l
   return point;
 }
 
-PatchPoint ExtraordinaryPatch::evaluate_deep(std::span<const Vec3> ring, int level, std::size_t k, double u,
-                                             double v) const {
+PatchPoint ExtraordinaryPatch::evaluate_in_eigenbasis(std::span<const Vec3> ring, double s, double t) const {
+  check(ring, s, t);
+  if (s == 0.0 && t == 0.0) return {corner_limit(ring), {}, {}, {}, {}, {}};
+  const Location at = locate(s, t);
+  const int level = at.level;
+  const std::size_t k = at.child;
+  const double u = at.u, v = at.v;
   const auto size = static_cast<Eigen::Index>(A_.rows());
   Eigen::MatrixXd control(size, 3);
   for (Eigen::Index i = 0; i < size; ++i) {
@@ -325,8 +371,9 @@ PatchPoint ExtraordinaryPatch::evaluate_deep(std::span<const Vec3> ring, int lev
     }
     return to_vec(over_ring * control);
   };
-  return {family(weights[0], 0), family(weights[1], 1), family(weights[2], 1),
-          family(weights[3], 2), family(weights[4], 2), family(weights[5], 2)};
+  return to_face({family(weights[0], 0), family(weights[1], 1), family(weights[2], 1), family(weights[3], 2),
+                  family(weights[4], 2), family(weights[5], 2)},
+                 k);
 }
 
 }  // namespace subdiv

@@ -18,10 +18,16 @@
 /// s + t, in [2^-(n+1), 2^-n)) lies in a regular child k of level n: its
 /// value is b(s', t') A_k A^n C with A^n = V Lambda^n V^-1 from the
 /// eigen-decomposition of A (the powers are taken by repeated products where
-/// A is not diagonalizable to working accuracy). For the first
-/// kCachedLevels levels the rows A_k A^n are kept (products, no eigenbasis):
-/// a point there costs one regular patch over the ring's image, which is
-/// nearly every point of F. The quad split's children
+/// A is not diagonalizable to working accuracy): evaluate_in_eigenbasis().
+/// evaluate() takes the same formula by products instead, without complex
+/// arithmetic: the rows A_k A^n are kept for the first kCachedLevels levels
+/// (a point there costs one regular patch over the ring's image); for the
+/// next kCachedLevels levels the ring, moved so that the corner's limit is
+/// the origin, is first stepped down by A^kCachedLevels. Closer to the
+/// corner than 2^-(2 kCachedLevels) evaluate() takes the eigenbasis: there
+/// the products would lose digits of the second derivatives (rounding in
+/// components whose second derivatives vanish, grown by 4^n), which the
+/// eigenbasis drops. The tests hold the two routes equal. The quad split's children
 /// keep F's frame at half scale; the triangle split's middle child is F's
 /// frame turned a half turn.
 #include <Eigen/Core>
@@ -86,7 +92,8 @@ class ExtraordinaryPatch {
   const std::vector<Vec3>& layout() const noexcept { return layout_; }
   /// \return A, the ring's map one step down onto the centre child's ring.
   const Eigen::MatrixXd& subdivision_matrix() const noexcept { return A_; }
-  /// \return whether A^n is taken through its eigenbasis (else by products).
+  /// \return whether evaluate_in_eigenbasis() takes A^n through the
+  ///   eigenbasis (else by products).
   bool uses_eigenbasis() const noexcept { return eigenbasis_; }
 
   /// The surface at (s, t) in F (the unit square, or the triangle s, t >= 0,
@@ -102,9 +109,18 @@ class ExtraordinaryPatch {
   ///   F (NaN included).
   PatchPoint evaluate(std::span<const Vec3> ring, double s, double t) const;
 
-  /// The levels n whose children's rows over the ring, A_k A^n, are kept:
-  /// (s, t) farther than 2^-kCachedLevels from the corner. Eight levels cost
-  /// 24 matrices of 16 (12) x K per valence.
+  /// evaluate() through the eigenbasis (Stam's route, see the file comment):
+  /// slower, kept as the independent reference the tests compare with.
+  /// \param ring size() control points.
+  /// \param s the first parameter.
+  /// \param t the second parameter.
+  /// \return position and derivatives with respect to (s, t).
+  /// \throws InvalidInputError as evaluate().
+  PatchPoint evaluate_in_eigenbasis(std::span<const Vec3> ring, double s, double t) const;
+
+  /// The levels n whose children's rows over the ring, A_k A^n, are kept,
+  /// and the step to the next as many (see the file comment). Eight levels
+  /// cost 24 matrices of 16 (12) x K per valence.
   static constexpr int kCachedLevels = 8;
 
  private:
@@ -115,16 +131,27 @@ class ExtraordinaryPatch {
     std::array<double, 2> origin{};
     std::array<double, 2> axis{};
   };
+  /// Where (s, t) lies: in regular child k of F's level-n centre child, at
+  /// the child's parameter (u, v).
+  struct Location {
+    int level = 0;
+    std::size_t child = 0;
+    double u = 0.0, v = 0.0;
+  };
   std::size_t child_holding(double s, double t) const noexcept;
-  PatchPoint evaluate_cached(std::span<const Vec3> ring, int level, std::size_t k, double u, double v) const;
-  PatchPoint evaluate_deep(std::span<const Vec3> ring, int level, std::size_t k, double u, double v) const;
+  void check(std::span<const Vec3> ring, double s, double t) const;
+  Location locate(double s, double t) const noexcept;
+  Vec3 corner_limit(std::span<const Vec3> ring) const noexcept;
+  PatchPoint evaluate_cached(std::span<const Vec3> ring, const Location& at) const;
+  PatchPoint to_face(PatchPoint in_child, std::size_t child) const noexcept;
 
   SplitRule split_ = SplitRule::quad;
   int valence_ = 0;
   Eigen::MatrixXd A_;              // K x K
   std::array<Child, 3> children_;
-  // A_k A^n for level n < kCachedLevels, at [3 n + k].
-  std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> level_rows_;
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  std::vector<RowMajor> level_rows_;  // A_k A^n for level n < kCachedLevels, at [3 n + k]
+  RowMajor step_;                     // A^kCachedLevels
   std::vector<int> signature_;
   std::vector<Vec3> layout_;
   bool eigenbasis_ = false;
