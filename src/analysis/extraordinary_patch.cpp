@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -99,12 +100,6 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(sp
     throw InvalidInputError("extraordinary patch: only the quad and triangle splits have one");
   }
   if (valence < 3) throw InvalidInputError("extraordinary patch: valence " + std::to_string(valence) + " is below 3");
-  if (split == SplitRule::triangle && valence == 3) {
-    // The middle child's corners are regular, but the triangles touching
-    // them wrap around the valence-3 corner: its ring is no lattice, and
-    // its patch needs one more level.
-    throw InvalidInputError("extraordinary patch: Loop at valence 3 needs a two-level patch, not built yet");
-  }
   const bool quads = split == SplitRule::quad;
   Configuration configuration;
   configuration.kind = Configuration::Kind::interior;
@@ -147,35 +142,74 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(sp
   if (quads) parameter[static_cast<std::size_t>(map.face_point(parent.corner_face(corner)))] = {0.5, 0.5};
   // The corner of a child of F at parameter `frame.origin` whose next corner
   // lies along the frame's u axis.
-  const auto corner_at = [&](const ChildFrame& frame) {
-    const auto [first, last] = child_faces(parent, split, parent.corner_face(corner));
-    for (Index f = first; f < last; ++f) {
-      for (Index k = 0; k < child.face_size(f); ++k) {
-        const Index cc = child.face_first_corner(f) + k;
-        const auto& p = parameter[static_cast<std::size_t>(child.corner_vertex(cc))];
-        const auto& q = parameter[static_cast<std::size_t>(child.corner_vertex(child.corner_next(cc)))];
+  // The corner of a face among `faces` of `mesh` at parameter
+  // `frame.origin` whose next corner lies along the frame's u axis.
+  const auto corner_at = [&](const MeshTopology& mesh, const std::vector<std::array<double, 2>>& at,
+                             std::pair<Index, Index> faces, const ChildFrame& frame) {
+    for (Index f = faces.first; f < faces.second; ++f) {
+      for (Index k = 0; k < mesh.face_size(f); ++k) {
+        const Index cc = mesh.face_first_corner(f) + k;
+        const auto& p = at[static_cast<std::size_t>(mesh.corner_vertex(cc))];
+        const auto& q = at[static_cast<std::size_t>(mesh.corner_vertex(mesh.corner_next(cc)))];
         if (p == frame.origin && q[0] == frame.origin[0] + frame.axis[0] && q[1] == frame.origin[1]) return cc;
       }
     }
     inconsistent(valence_, "no child face has the expected frame");
   };
-  const Index centre_child = corner_at({{0.0, 0.0}, {0.5, 0.5}});
+  const auto children_of_F = child_faces(parent, split, parent.corner_face(corner));
+  const Index centre_child = corner_at(child, parameter, children_of_F, {{0.0, 0.0}, {0.5, 0.5}});
   const std::optional<FaceRing> child_ring = face_ring(child, centre_child);
   if (!child_ring || child_ring->signature != signature_) inconsistent(valence_, "the centre child's ring differs");
   A_ = rows_over_ring(table, child_ring->vertices, column_of, size, valence_);
-  const auto& frames = quads ? kQuadChildren : kTriangleChildren;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const Index origin = corner_at(frames[k]);
+  // A regular piece: the patch points at `origin` of `mesh`, as rows of
+  // `stencils` over the ring.
+  const auto piece = [&](const MeshTopology& mesh, const StencilTable& stencils, Index origin, const ChildFrame& frame) {
     std::vector<Index> rows;
     if (quads) {
-      const auto points = bicubic_patch_points(child, origin);
+      const auto points = bicubic_patch_points(mesh, origin);
       if (points) rows.assign(points->begin(), points->end());
     } else {
-      const auto points = box_spline_patch_points(child, origin);
+      const auto points = box_spline_patch_points(mesh, origin);
       if (points) rows.assign(points->begin(), points->end());
     }
-    if (rows.empty()) inconsistent(valence_, "a regular child has no regular patch");
-    children_[k] = {rows_over_ring(table, rows, column_of, size, valence_), frames[k].origin, frames[k].axis};
+    if (rows.empty()) inconsistent(valence_, "a regular piece has no regular patch");
+    children_.push_back({rows_over_ring(stencils, rows, column_of, size, valence_), frame.origin, frame.axis});
+  };
+  const auto& frames = quads ? kQuadChildren : kTriangleChildren;
+  const bool middle_split = !quads && valence == 3;
+  for (std::size_t k = 0; k < (middle_split ? 2 : 3); ++k)
+    piece(child, table, corner_at(child, parameter, children_of_F, frames[k]), frames[k]);
+  if (middle_split) {
+    // Loop at valence 3: the triangles around the middle child's corners
+    // wrap around the corner (its patch points are not distinct), so its
+    // four children, one level further down, are the pieces instead.
+    RefineOptions two_steps = one_step;
+    two_steps.levels = 2;
+    const StencilTable table2 = refine_stencil_table(model.mesh, loop_scheme(), two_steps);
+    PolygonMesh grandchild_mesh;
+    const SplitMap map2 = split_topology(child_mesh, child, split, grandchild_mesh);
+    const MeshTopology grandchild(grandchild_mesh);
+    // Level-2 parameters: vertex points keep theirs, edge points of edges
+    // inside F take their ends' midpoint.
+    std::vector<std::array<double, 2>> parameter2(static_cast<std::size_t>(grandchild.vertex_count()), {-1.0, -1.0});
+    for (Index v = 0; v < child.vertex_count(); ++v)
+      parameter2[static_cast<std::size_t>(map2.vertex_point(v))] = parameter[static_cast<std::size_t>(v)];
+    for (Index e = 0; e < child.edge_count(); ++e) {
+      const auto [a, b] = child.edge_vertices(e);
+      const auto& pa = parameter[static_cast<std::size_t>(a)];
+      const auto& pb = parameter[static_cast<std::size_t>(b)];
+      if (pa[0] >= 0.0 && pb[0] >= 0.0)
+        parameter2[static_cast<std::size_t>(map2.edge_point(e))] = {(pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2};
+    }
+    const ChildFrame& middle = frames[2];
+    const Index middle_face = child.corner_face(corner_at(child, parameter, children_of_F, middle));
+    constexpr std::array<ChildFrame, 4> kSubFrames = {{{{0.0, 0.0}, {0.5, 0.5}}, kTriangleChildren[0],
+                                                       kTriangleChildren[1], kTriangleChildren[2]}};
+    for (const ChildFrame& sub : kSubFrames) {
+      const ChildFrame frame{{middle.origin[0] + sub.origin[0] * middle.axis[0], middle.origin[1] + sub.origin[1] * middle.axis[1]},
+                             {sub.axis[0] * middle.axis[0], sub.axis[1] * middle.axis[1]}};
+      piece(grandchild, table2, corner_at(grandchild, parameter2, child_faces(child, split, middle_face), frame), frame);
+    }
   }
   Eigen::MatrixXd power = Eigen::MatrixXd::Identity(size, size);  // A^n
   for (int n = 0; n < kCachedLevels; ++n, power = A_ * power)
@@ -200,7 +234,7 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(sp
         eigenbasis_ = true;
         eigenvalues_ = solver.eigenvalues();
         V_inverse_ = V_inverse;
-        for (std::size_t k = 0; k < 3; ++k) child_V_[k] = children_[k].rows.cast<std::complex<double>>() * V;
+        for (const Child& regular : children_) child_V_.push_back(regular.rows.cast<std::complex<double>>() * V);
       }
     }
   }
@@ -208,7 +242,22 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(sp
 
 std::size_t ExtraordinaryPatch::child_holding(double s, double t) const noexcept {
   if (split_ == SplitRule::quad) return s >= 0.5 ? (t >= 0.5 ? 1 : 0) : 2;
-  return s >= 0.5 ? 0 : (t >= 0.5 ? 1 : 2);
+  if (s >= 0.5) return 0;
+  if (t >= 0.5) return 1;
+  if (children_.size() == 3) return 2;
+  // The middle child's four pieces: the one (s, t) lies in, or nearest.
+  std::size_t best = 2;
+  double best_outside = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 2; k < children_.size(); ++k) {
+    const Child& c = children_[k];
+    const double u = (s - c.origin[0]) / c.axis[0], v = (t - c.origin[1]) / c.axis[1];
+    const double outside = std::max({0.0, -u, -v, u + v - 1.0});
+    if (outside < best_outside) {
+      best = k;
+      best_outside = outside;
+    }
+  }
+  return best;
 }
 
 void ExtraordinaryPatch::check(std::span<const Vec3> ring, double s, double t) const {
@@ -262,39 +311,54 @@ PatchPoint ExtraordinaryPatch::evaluate(std::span<const Vec3> ring, double s, do
   if (s == 0.0 && t == 0.0) return {corner_limit(ring), {}, {}, {}, {}, {}};
   Location at = locate(s, t);
   if (at.level < kCachedLevels) return to_face(evaluate_cached(ring, at), at.child);
-  // Deeper than the cached levels' reach: the eigenbasis, whose scaling
-  // keeps every derivative exact however close to the corner (below).
-  if (at.level >= 2 * kCachedLevels) return evaluate_in_eigenbasis(ring, s, t);
-  // One step of kCachedLevels levels: the ring moved so that the corner's
-  // limit is the origin (its constant component would otherwise lose the
-  // derivatives' digits), times A^kCachedLevels; then the cached levels.
-  const Vec3 limit = corner_limit(ring);
+  // Closer than 2^-(2 kCachedLevels): the eigenbasis, whose scaling keeps
+  // every derivative exact however close to the corner.
+  if (at.level >= 2 * kCachedLevels && eigenbasis_) return evaluate_in_eigenbasis(ring, s, t);
+  // Steps of kCachedLevels levels (one, or as many as it takes where A has
+  // no eigenbasis): the ring moved so that the corner's limit is the origin,
+  // times A^kCachedLevels, scaled by 2^kCachedLevels (the first
+  // derivatives' growth; positions are scaled back below, second
+  // derivatives get one more factor); then the cached levels. Each step is
+  // moved back onto its limit: the constant component's rounding, left in,
+  // would grow by the scale every step while the rest does not.
   thread_local std::vector<Vec3> moved, stepped;
-  moved.resize(ring.size());
+  moved.assign(ring.begin(), ring.end());
   stepped.resize(ring.size());
-  for (std::size_t i = 0; i < ring.size(); ++i) moved[i] = ring[i] - limit;
-  for (std::size_t r = 0; r < ring.size(); ++r) {
-    const double* row = step_.data() + r * ring.size();
-    Vec3 p{};
-    for (std::size_t i = 0; i < ring.size(); ++i) p += row[i] * moved[i];
-    stepped[r] = p;
+  Vec3 limit{};  // the corner's limit: the moves, each scaled back
+  const auto recentre = [&](int shift) {
+    const Vec3 centre = corner_limit(moved);
+    for (Vec3& p : moved) p = p - centre;
+    limit += Vec3{std::ldexp(centre.x, -shift), std::ldexp(centre.y, -shift), std::ldexp(centre.z, -shift)};
+  };
+  recentre(0);
+  const double growth = std::ldexp(1.0, kCachedLevels);
+  int shift = 0;
+  for (; at.level >= kCachedLevels; at.level -= kCachedLevels) {
+    for (std::size_t r = 0; r < ring.size(); ++r) {
+      const double* row = step_.data() + r * ring.size();
+      Vec3 p{};
+      for (std::size_t i = 0; i < ring.size(); ++i) p += row[i] * moved[i];
+      stepped[r] = growth * p;
+    }
+    moved.swap(stepped);
+    shift += kCachedLevels;
+    recentre(shift);
   }
-  at.level -= kCachedLevels;
-  PatchPoint p = evaluate_cached(stepped, at);
-  const double first = std::ldexp(1.0, kCachedLevels), second = first * first;
-  p.position = limit + p.position;
-  p.du = first * p.du;
-  p.dv = first * p.dv;
-  p.duu = second * p.duu;
-  p.duv = second * p.duv;
-  p.dvv = second * p.dvv;
+  PatchPoint p = evaluate_cached(moved, at);
+  // ldexp: 2^-n and 2^n apart can leave the double range where the results
+  // do not.
+  const auto scaled = [](Vec3 v, int e) { return Vec3{std::ldexp(v.x, e), std::ldexp(v.y, e), std::ldexp(v.z, e)}; };
+  p.position = limit + scaled(p.position, -shift);
+  p.duu = scaled(p.duu, shift);
+  p.duv = scaled(p.duv, shift);
+  p.dvv = scaled(p.dvv, shift);
   return to_face(p, at.child);
 }
 
 PatchPoint ExtraordinaryPatch::evaluate_cached(std::span<const Vec3> ring, const Location& at) const {
   // The child's regular patch points, A_k A^n times the ring; then its
   // derivatives in F's level-n frame, 2^n per order.
-  const auto& rows = level_rows_[3 * static_cast<std::size_t>(at.level) + at.child];
+  const auto& rows = level_rows_[children_.size() * static_cast<std::size_t>(at.level) + at.child];
   const auto patch_points = [&](auto& points) {
     for (std::size_t r = 0; r < points.size(); ++r) {
       const double* row = rows.data() + r * ring.size();

@@ -27,9 +27,14 @@
 /// corner than 2^-(2 kCachedLevels) evaluate() takes the eigenbasis: there
 /// the products would lose digits of the second derivatives (rounding in
 /// components whose second derivatives vanish, grown by 4^n), which the
-/// eigenbasis drops. The tests hold the two routes equal. The quad split's children
+/// eigenbasis drops. Where A has no eigenbasis to working accuracy (Loop at
+/// valence 3: A is defective) the steps go on to any depth, each moved back
+/// onto its limit. The tests hold the routes equal. The quad split's children
 /// keep F's frame at half scale; the triangle split's middle child is F's
-/// frame turned a half turn.
+/// frame turned a half turn. Loop at valence 3 is the exception: the
+/// triangles around the middle child's corners wrap around the corner, so
+/// that child is no regular patch; its four children, one level further
+/// down, are regular patches (read off two levels of the ring mesh).
 #include <Eigen/Core>
 #include <array>
 #include <optional>
@@ -70,10 +75,8 @@ std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner);
 class ExtraordinaryPatch {
  public:
   /// Builds the model for \p split at valence \p valence (>= 3).
-  /// \throws InvalidInputError for a valence below 3, the triangle split at
-  ///   valence 3 (the triangles touching its middle child wrap around the
-  ///   corner, so that child is no regular patch until one level further),
-  ///   or a split other than the quad and triangle splits.
+  /// \throws InvalidInputError for a valence below 3, or a split other than
+  ///   the quad and triangle splits.
   /// \throws std::logic_error where the ring mesh's refinement does not have
   ///   the expected structure (an internal inconsistency).
   ExtraordinaryPatch(SplitRule split, int valence);
@@ -148,15 +151,18 @@ class ExtraordinaryPatch {
   SplitRule split_ = SplitRule::quad;
   int valence_ = 0;
   Eigen::MatrixXd A_;              // K x K
-  std::array<Child, 3> children_;
+  // The regular pieces of F outside its centre child: its other three
+  // children, except Loop at valence 3, where the middle child's four
+  // children take its place (see the constructor).
+  std::vector<Child> children_;
   using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  std::vector<RowMajor> level_rows_;  // A_k A^n for level n < kCachedLevels, at [3 n + k]
+  std::vector<RowMajor> level_rows_;  // A_k A^n for level n < kCachedLevels, at [pieces n + k]
   RowMajor step_;                     // A^kCachedLevels
   std::vector<int> signature_;
   std::vector<Vec3> layout_;
   bool eigenbasis_ = false;
   Eigen::VectorXcd eigenvalues_;              // Lambda
-  std::array<Eigen::MatrixXcd, 3> child_V_;  // A_k V, per child
+  std::vector<Eigen::MatrixXcd> child_V_;    // A_k V, per piece
   Eigen::MatrixXcd V_inverse_;               // V^-1
   Eigen::VectorXd limit_row_;                // the limit of the corner: row of A^infinity
 };

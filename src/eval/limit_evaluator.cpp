@@ -211,9 +211,6 @@ void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOpti
     if (kind != VertexKind::interior)
       throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is " +
                               (kind == VertexKind::isolated ? "used by no face" : "non-manifold"));
-    if (name == loop && t.valence(v) == 3)
-      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) +
-                              " has valence 3, which Loop's exact evaluation does not cover yet");
   }
 }
 

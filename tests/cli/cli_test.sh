@@ -213,8 +213,9 @@ run tessellate-loop 0 tessellate "$meshes/elephant.obj" -s loop --rate 2 -o "$wo
   run tessellate-loop-closed 0 info "$work/elephant_t.obj" && stdout_has tessellate-loop-closed "(boundary 0, non-manifold 0)"
 run tessellate-ngons 0 tessellate "$meshes/rook.obj" --rate 4 -o "$work/rook_t.obj" &&
   run tessellate-ngons-closed 0 info "$work/rook_t.obj" && stdout_has tessellate-ngons-closed "(boundary 0, non-manifold 0)"
-run tessellate-valence-3 1 tessellate "$meshes/tetrahedron.obj" -s loop --rate 2 -o "$work/x.obj" &&
-  stderr_one_line tessellate-valence-3 && stderr_has tessellate-valence-3 "has valence 3"
+run tessellate-valence-3 0 tessellate "$meshes/tetrahedron.obj" -s loop --rate 2 -o "$work/tetrahedron_t.obj" &&
+  run tessellate-valence-3-closed 0 info "$work/tetrahedron_t.obj" &&
+  stdout_has tessellate-valence-3-closed "(boundary 0, non-manifold 0)"
 run tessellate-odd 1 tessellate "$meshes/spot_control_mesh.obj" --rate 3 -o "$work/x.obj" &&
   stderr_one_line tessellate-odd && stderr_has tessellate-odd "give an even rate"
 [ ! -e "$work/x.obj" ] && pass || fail "tessellate-odd: wrote $work/x.obj"

@@ -70,6 +70,7 @@ TEST(Tessellate, ClosedMeshesGiveClosedWatertightTessellations) {
   for (int rate : {1, 2, 5}) expect_closed_tessellation(test::jittered(test::cube(), 2), "catmull-clark", rate);
   for (int rate : {2, 4, 6}) expect_closed_tessellation(bipyramid(5, 3), "catmull-clark", rate);  // n-gons
   for (int rate : {1, 3, 4}) expect_closed_tessellation(bipyramid(7, 4), "loop", rate);
+  expect_closed_tessellation(test::tetrahedron(), "loop", 3);  // valence 3 everywhere
 }
 
 TEST(Tessellate, RefusesBadRates) {
