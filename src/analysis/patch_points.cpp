@@ -46,7 +46,144 @@ bool all_distinct(std::array<Index, N> points) {
   return std::adjacent_find(points.begin(), points.end()) == points.end();
 }
 
+bool is_infinitely_sharp(const LevelCreasing& creasing, Index e) {
+  return edge_sharpness_of(creasing, e) >= kInfiniteSharpness;
+}
+
+PatchStencil vertex_stencil(Index v) {
+  PatchStencil p;
+  p.vertex[0] = v;
+  p.weight[0] = 1.0;
+  p.size = 1;
+  return p;
+}
+
+/// 2 a - b, terms on the same vertex merged.
+PatchStencil reflection(const PatchStencil& a, const PatchStencil& b) {
+  PatchStencil r;
+  const auto add = [&](Index v, double w) {
+    for (int i = 0; i < r.size; ++i) {
+      if (r.vertex[static_cast<std::size_t>(i)] == v) {
+        r.weight[static_cast<std::size_t>(i)] += w;
+        return;
+      }
+    }
+    // At most 4 distinct vertices: a reflection of reflections of a 2 x 2 block.
+    r.vertex[static_cast<std::size_t>(r.size)] = v;
+    r.weight[static_cast<std::size_t>(r.size)] = w;
+    ++r.size;
+  };
+  for (int i = 0; i < a.size; ++i) add(a.vertex[static_cast<std::size_t>(i)], 2.0 * a.weight[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < b.size; ++i) add(b.vertex[static_cast<std::size_t>(i)], -b.weight[static_cast<std::size_t>(i)]);
+  return r;
+}
+
+/// Whether every face at v is a quad.
+bool quads_around(const MeshTopology& topology, Index v) {
+  for (const Index c : topology.vertex_corners(v))
+    if (topology.face_size(topology.corner_face(c)) != 4) return false;
+  return true;
+}
+
+/// Whether corner c's vertex is one of bicubic_patch_stencils' corner
+/// kinds, given which of the face's sides at it (to the next corner, from
+/// the previous one) are sharp.
+bool is_patch_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index c, bool next_sharp,
+                     bool prev_sharp) {
+  const Index v = topology.corner_vertex(c);
+  const VertexRule rule = creasing.vertex_rule[static_cast<std::size_t>(v)];
+  if (rule != creasing.child_vertex_rule[static_cast<std::size_t>(v)] || !quads_around(topology, v)) return false;
+  int sharp = 0;
+  for (const Index e : topology.vertex_edges(v)) {
+    const double s = edge_sharpness_of(creasing, e);
+    if (s > 0.0 && s < kInfiniteSharpness) return false;  // semi-sharp
+    sharp += s > 0.0 ? 1 : 0;
+  }
+  if (!next_sharp && !prev_sharp) return rule == VertexRule::smooth && sharp == 0 && is_regular_interior(topology, v, 4);
+  if (next_sharp && prev_sharp) return rule == VertexRule::corner;
+  if (rule != VertexRule::crease || sharp != 2) return false;
+  const bool boundary = topology.vertex_kind(v) == VertexKind::boundary;
+  if (boundary ? topology.vertex_face_count(v) != 2 : !is_regular_interior(topology, v, 4)) return false;
+  // The sharp side's continuation through v: the far side at v of the face
+  // across the smooth side.
+  if (next_sharp) {
+    const Index left = topology.corner_across(topology.corner_prev(c));  // at v, across the previous side
+    return left != kInvalidIndex && is_infinitely_sharp(creasing, topology.corner_edge(topology.corner_prev(left)));
+  }
+  const Index below = topology.corner_across(c);  // at the next corner, across the next side
+  return below != kInvalidIndex && is_infinitely_sharp(creasing, topology.corner_edge(topology.corner_next(below)));
+}
+
 }  // namespace
+
+std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTopology& topology,
+                                                                  const LevelCreasing& creasing, Index corner) {
+  const Index face = topology.corner_face(corner);
+  if (topology.face_size(face) != 4) return std::nullopt;
+  // Corner k at grid point kOrigin[k]; side k runs from corner k to corner
+  // k + 1, and kOutward[k] leaves the face across it.
+  constexpr std::array<std::array<int, 2>, 4> kOrigin = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  constexpr std::array<std::array<int, 2>, 4> kOutward = {{{0, -1}, {1, 0}, {0, 1}, {-1, 0}}};
+  std::array<Index, 4> corners{};
+  std::array<bool, 4> sharp{};
+  for (std::size_t k = 0; k < 4; ++k) {
+    corners[k] = k == 0 ? corner : topology.corner_next(corners[k - 1]);
+    sharp[k] = is_infinitely_sharp(creasing, topology.corner_edge(corners[k]));
+  }
+  for (std::size_t k = 0; k < 4; ++k)
+    if (!is_patch_corner(topology, creasing, corners[k], sharp[k], sharp[(k + 3) % 4])) return std::nullopt;
+
+  std::array<std::optional<PatchStencil>, 16> grid;
+  const auto at = [&](int i, int j) -> std::optional<PatchStencil>& {
+    return grid[static_cast<std::size_t>(grid_index(i, j))];
+  };
+  for (std::size_t k = 0; k < 4; ++k) at(kOrigin[k][0], kOrigin[k][1]) = vertex_stencil(topology.corner_vertex(corners[k]));
+  // Beside each side: across it, or reflected across it.
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto [ax, ay] = kOrigin[k];
+    const auto [bx, by] = kOrigin[(k + 1) % 4];
+    const auto [dx, dy] = kOutward[k];
+    if (sharp[k]) {
+      at(ax + dx, ay + dy) = reflection(*at(ax, ay), *at(ax - dx, ay - dy));
+      at(bx + dx, by + dy) = reflection(*at(bx, by), *at(bx - dx, by - dy));
+    } else {
+      // The face across runs the side backwards: its corner at b, then a.
+      const Index across = topology.corner_across(corners[k]);
+      if (across == kInvalidIndex || topology.face_size(topology.corner_face(across)) != 4) return std::nullopt;
+      at(ax + dx, ay + dy) = vertex_stencil(topology.corner_vertex(topology.corner_next(topology.corner_next(across))));
+      at(bx + dx, by + dy) = vertex_stencil(topology.corner_vertex(topology.corner_prev(across)));
+    }
+  }
+  // Beyond each corner: the diagonal face's far vertex, or a reflection of
+  // the points beside the sides across a sharp one.
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto [ox, oy] = kOrigin[k];
+    const auto [nx, ny] = kOutward[k];            // across the side to the next corner
+    const auto [px, py] = kOutward[(k + 3) % 4];  // across the side from the previous one
+    if (sharp[k]) {
+      at(ox + nx + px, oy + ny + py) = reflection(*at(ox + px, oy + py), *at(ox + px - nx, oy + py - ny));
+    } else if (sharp[(k + 3) % 4]) {
+      at(ox + nx + px, oy + ny + py) = reflection(*at(ox + nx, oy + ny), *at(ox + nx - px, oy + ny - py));
+    } else {
+      const auto beyond = points_beyond(topology, corners[k]);
+      if (!beyond) return std::nullopt;
+      at(ox + nx + px, oy + ny + py) = vertex_stencil((*beyond)[1]);
+    }
+  }
+  std::array<PatchStencil, 16> out;
+  std::array<Index, 16> real{};
+  std::size_t reals = 0;
+  for (std::size_t i = 0; i < 16; ++i) {
+    out[i] = *grid[i];
+    if (out[i].size == 1) real[reals++] = out[i].vertex[0];
+  }
+  // A small closed mesh can reach the same vertex twice (a 3 x 3 torus).
+  std::sort(real.begin(), real.begin() + static_cast<std::ptrdiff_t>(reals));
+  if (std::adjacent_find(real.begin(), real.begin() + static_cast<std::ptrdiff_t>(reals)) !=
+      real.begin() + static_cast<std::ptrdiff_t>(reals))
+    return std::nullopt;
+  return out;
+}
 
 std::optional<std::array<Index, 16>> bicubic_patch_points(const MeshTopology& topology, Index corner) {
   const Index face = topology.corner_face(corner);

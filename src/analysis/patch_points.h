@@ -10,6 +10,7 @@
 
 #include "subdiv/core/types.h"
 #include "subdiv/mesh/topology.h"
+#include "subdiv/refine/creasing.h"
 
 namespace subdiv {
 
@@ -23,6 +24,38 @@ namespace subdiv {
 ///   vertex with four faces, all quads, consistently oriented around it.
 /// \pre \p corner is in [0, topology.corner_count()) (unchecked).
 std::optional<std::array<Index, 16>> bicubic_patch_points(const MeshTopology& topology, Index corner);
+
+/// A control point of a patch as a combination of mesh vertices: a vertex
+/// itself (one term of weight 1), or a phantom point reflected across a
+/// sharp edge (2 p - q, or 4 p - 2 q - 2 r + s beyond a corner).
+struct PatchStencil {
+  std::array<Index, 4> vertex{};   ///< the vertices, `size` of them
+  std::array<double, 4> weight{};  ///< their weights (sum 1)
+  int size = 0;                    ///< 1 to 4
+};
+
+/// The bicubic patch of the quad that holds `corner` where its sharp edges
+/// (boundaries, infinitely sharp creases) run along its sides, as
+/// OpenSubdiv's regular boundary patches: beyond a sharp side the grid's
+/// row is the reflection 2 p - q of the rows inside, which reproduces
+/// Catmull-Clark's crease and boundary rule (1/8, 3/4, 1/8) and, where two
+/// sharp sides meet at a corner vertex, its corner rule. Each corner must
+/// be one of: smooth (an interior vertex of four quads, no sharp edge); a
+/// crease or boundary vertex (crease rule, exactly two sharp edges: the
+/// face's side and its continuation; four quads, or two on a boundary);
+/// a corner (corner rule) where both of the face's sides at it are sharp.
+/// Semi-sharp edges at a corner (0 < sharpness < infinite) are refused:
+/// their rules are not the B-spline's until they decay.
+/// \param topology the level's topology.
+/// \param creasing the level's creasing (compute_creasing).
+/// \param corner a corner of a quad, at parameter (0, 0) as in
+///   bicubic_patch_points.
+/// \return the 16 points in bicubic_patch_points' order; empty where the
+///   face is no such patch (including where the real points reach a vertex
+///   twice). Without sharp edges, equal to bicubic_patch_points.
+/// \pre \p corner is in [0, topology.corner_count()) (unchecked).
+std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTopology& topology,
+                                                                  const LevelCreasing& creasing, Index corner);
 
 /// The box-spline patch of the triangle that holds `corner`, with that
 /// corner at lattice point (0, 0), the next corner of its face at (1, 0) and

@@ -75,10 +75,17 @@ class LimitEvaluator::Builder {
       const auto& p = hierarchy_.levels[l].mesh.positions;
       out_.positions_.insert(out_.positions_.end(), p.begin(), p.end());
     }
+    // Phantom points (reflections across sharp edges) follow, recorded as
+    // -1 - their number.
+    const auto phantom_offset = static_cast<Index>(out_.positions_.size());
+    out_.positions_.insert(out_.positions_.end(), phantoms_.begin(), phantoms_.end());
     for (std::size_t i = 0; i < out_.leaves_.size(); ++i) {
       const std::size_t end = i + 1 < out_.leaves_.size() ? out_.leaves_[i + 1].first_control : out_.control_.size();
-      for (std::size_t c = out_.leaves_[i].first_control; c < end; ++c)
-        out_.control_[c] += static_cast<Index>(offset[static_cast<std::size_t>(leaf_level_[i])]);
+      for (std::size_t c = out_.leaves_[i].first_control; c < end; ++c) {
+        Index& index = out_.control_[c];
+        index = index < 0 ? phantom_offset + (-1 - index)
+                          : index + static_cast<Index>(offset[static_cast<std::size_t>(leaf_level_[i])]);
+      }
     }
     out_.isolation_levels_ = static_cast<int>(hierarchy_.levels.size()) - 1;
   }
@@ -101,12 +108,37 @@ class LimitEvaluator::Builder {
     return *topologies_[static_cast<std::size_t>(level)];
   }
 
-  bool is_regular_vertex(const MeshTopology& t, Index v) const {
+  // The level's creasing (boundaries and crease tags), computed once.
+  const LevelCreasing& creasing(int level) {
+    const MeshTopology& t = topology(level);
+    while (static_cast<int>(creasings_.size()) <= level) creasings_.emplace_back();
+    auto& slot = creasings_[static_cast<std::size_t>(level)];
+    if (!slot) {
+      const PolygonMesh& mesh = hierarchy_.levels[static_cast<std::size_t>(level)].mesh;
+      slot = std::make_unique<LevelCreasing>(
+          compute_creasing(mesh, t, boundary_of(mesh, options_), crease_method_of(mesh, options_)));
+    }
+    return *slot;
+  }
+
+  // An interior vertex of the regular valence, its faces of the regular
+  // size, no sharp edge and the smooth rule.
+  bool is_regular_vertex(int level, Index v) {
+    const MeshTopology& t = topology(level);
     const Index regular = out_.triangles_ ? 6 : 4;
     if (t.vertex_kind(v) != VertexKind::interior || t.valence(v) != regular || t.vertex_face_count(v) != regular)
       return false;
     for (const Index c : t.vertex_corners(v))
       if (t.face_size(t.corner_face(c)) != (out_.triangles_ ? 3 : 4)) return false;
+    return is_smooth_vertex(level, v);
+  }
+
+  // The smooth rule and no sharp edge around v.
+  bool is_smooth_vertex(int level, Index v) {
+    const LevelCreasing& c = creasing(level);
+    if (c.vertex_rule[static_cast<std::size_t>(v)] != VertexRule::smooth) return false;
+    for (const Index e : topology(level).vertex_edges(v))
+      if (edge_sharpness_of(c, e) > 0.0) return false;
     return true;
   }
 
@@ -129,21 +161,21 @@ class LimitEvaluator::Builder {
     const Index size = out_.triangles_ ? 3 : 4;
     if (t.face_size(face) == size) {
       const Index first = t.face_first_corner(face);
+      if (out_.triangles_) {
+        if (const auto points = box_spline_patch_points(t, first); points && all_regular(level, first))
+          return add_leaf(level, frame, nullptr, *points);
+      } else if (const auto stencils = bicubic_patch_stencils(t, creasing(level), first)) {
+        return add_leaf(level, frame, nullptr, control_points(level, *stencils));
+      }
       int irregular = 0;
       Index corner = first;
       for (Index k = 0; k < size; ++k)
-        if (!is_regular_vertex(t, t.corner_vertex(first + k))) {
+        if (!is_regular_vertex(level, t.corner_vertex(first + k))) {
           ++irregular;
           corner = first + k;
         }
-      if (irregular == 0) {
-        if (out_.triangles_) {
-          if (const auto points = box_spline_patch_points(t, first)) return add_leaf(level, frame, nullptr, *points);
-        } else if (const auto points = bicubic_patch_points(t, first)) {
-          return add_leaf(level, frame, nullptr, *points);
-        }
-      } else if (irregular == 1) {
-        const Index vertex = t.corner_vertex(corner);
+      const Index vertex = t.corner_vertex(corner);
+      if (irregular == 1 && t.vertex_kind(vertex) == VertexKind::interior && is_smooth_vertex(level, vertex)) {
         const ExtraordinaryPatch& patch = model(static_cast<int>(t.valence(vertex)));
         const auto ring = face_ring(t, corner);
         if (ring && ring->signature == patch.signature())
@@ -159,18 +191,44 @@ class LimitEvaluator::Builder {
     }
   }
 
+  // Whether the corners of the face at `first` are all regular vertices.
+  bool all_regular(int level, Index first) {
+    const MeshTopology& t = topology(level);
+    for (Index k = 0; k < t.face_size(t.corner_face(first)); ++k)
+      if (!is_regular_vertex(level, t.corner_vertex(first + k))) return false;
+    return true;
+  }
+
+  // The patch's control points: its vertices (level-local indices), and
+  // each phantom point as a new point (-1 - its number, see build()).
+  std::vector<Index> control_points(int level, const std::array<PatchStencil, 16>& stencils) {
+    const std::vector<Vec3>& positions = hierarchy_.levels[static_cast<std::size_t>(level)].mesh.positions;
+    std::vector<Index> points;
+    points.reserve(stencils.size());
+    for (const PatchStencil& p : stencils) {
+      if (p.size == 1) {
+        points.push_back(p.vertex[0]);
+        continue;
+      }
+      Vec3 phantom{};
+      for (int i = 0; i < p.size; ++i)
+        phantom += p.weight[static_cast<std::size_t>(i)] * positions[static_cast<std::size_t>(p.vertex[static_cast<std::size_t>(i)])];
+      points.push_back(-1 - static_cast<Index>(phantoms_.size()));
+      phantoms_.push_back(phantom);
+    }
+    return points;
+  }
+
   // The unit normal at an extraordinary vertex, from the scheme's tangent masks.
   Vec3 corner_normal(int level, Index vertex) {
     const MeshTopology& t = topology(level);
     const PolygonMesh& mesh = hierarchy_.levels[static_cast<std::size_t>(level)].mesh;
-    if (!creasing_level_ || *creasing_level_ != level) {
-      creasing_ = compute_creasing(mesh, t, boundary_of(mesh, options_), crease_method_of(mesh, options_));
-      creasing_level_ = level;
+    // Read only: no vertex is semi-sharp where an extraordinary patch applies.
+    if (semi_sharp_.size() < static_cast<std::size_t>(mesh.vertex_count()))
       semi_sharp_.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
-    }
     LimitMasks scratch;
-    const auto limit =
-        detail::closed_form_limit(scheme_, detail::LimitLevel{t, *creasing_, mesh.positions, semi_sharp_}, vertex, scratch);
+    const auto limit = detail::closed_form_limit(
+        scheme_, detail::LimitLevel{t, creasing(level), mesh.positions, semi_sharp_}, vertex, scratch);
     if (!limit) throw std::logic_error("limit evaluation: no tangent masks at an isolated extraordinary vertex");
     const Vec3 n = cross(limit->tangent1, limit->tangent2);
     const double length = norm(n);
@@ -183,12 +241,63 @@ class LimitEvaluator::Builder {
   Hierarchy hierarchy_;
   std::vector<std::unique_ptr<MeshTopology>> topologies_;
   std::vector<int> leaf_level_;
-  std::optional<LevelCreasing> creasing_;
-  std::optional<int> creasing_level_;
-  std::vector<char> semi_sharp_;
+  std::vector<std::unique_ptr<LevelCreasing>> creasings_;  // per level, when asked
+  std::vector<Vec3> phantoms_;                              // phantom control points, in order
+  std::vector<char> semi_sharp_;  // all zero
 };
 
 namespace {
+
+// The first element the evaluator cannot handle, as an error.
+// Whether both of the face's edges at corner c are infinitely sharp.
+bool between_sharp_edges(const MeshTopology& t, const LevelCreasing& c, Index corner) {
+  return edge_sharpness_of(c, t.corner_edge(corner)) >= kInfiniteSharpness &&
+         edge_sharpness_of(c, t.corner_edge(t.corner_prev(corner))) >= kInfiniteSharpness;
+}
+
+// Catmull-Clark's sharp features: those whose faces isolate into regular
+// boundary, crease and corner patches (patch_points.h).
+void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const RefineOptions& options) {
+  const LevelCreasing c = compute_creasing(mesh, t, boundary_of(mesh, options), crease_method_of(mesh, options));
+  for (Index e = 0; e < t.edge_count(); ++e) {
+    const double s = edge_sharpness_of(c, e);
+    if (s > 0.0 && s < kInfiniteSharpness) {
+      const auto [a, b] = t.edge_vertices(e);
+      throw InvalidInputError("limit evaluation: edge " + std::to_string(a) + "-" + std::to_string(b) + " has sharpness " +
+                              std::to_string(s) + "; exact evaluation covers smooth and infinitely sharp edges so far");
+    }
+  }
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    const auto i = static_cast<std::size_t>(v);
+    const std::string vertex = "limit evaluation: vertex " + std::to_string(v);
+    if (c.vertex_rule[i] != c.child_vertex_rule[i])
+      throw InvalidInputError(vertex + " has a semi-sharp corner tag; exact evaluation covers infinitely sharp ones");
+    const auto corners = t.vertex_corners(v);
+    switch (c.vertex_rule[i]) {
+      case VertexRule::smooth:
+        break;
+      case VertexRule::dart:
+        throw InvalidInputError(vertex + " ends a crease (a dart); exact evaluation covers creases that run through");
+      case VertexRule::crease:
+        if (t.vertex_kind(v) == VertexKind::boundary) {
+          if (t.vertex_face_count(v) != 2)
+            throw InvalidInputError(vertex + " is a boundary vertex of " + std::to_string(t.vertex_face_count(v)) +
+                                    " faces; exact evaluation covers boundary vertices of 2 faces, and corners");
+        } else if (t.valence(v) != 4 || std::any_of(corners.begin(), corners.end(), [&](Index corner) {
+                     return between_sharp_edges(t, c, corner);
+                   })) {
+          throw InvalidInputError(vertex + " lies on a crease with " + std::to_string(t.valence(v)) +
+                                  " edges; exact evaluation covers creases straight through vertices of 4 edges");
+        }
+        break;
+      case VertexRule::corner:
+        if (!std::all_of(corners.begin(), corners.end(), [&](Index corner) { return between_sharp_edges(t, c, corner); }))
+          throw InvalidInputError(vertex + " is a corner with a face between smooth edges; exact evaluation covers "
+                                           "corners whose faces lie between sharp edges");
+        break;
+    }
+  }
+}
 
 // The first element the evaluator cannot handle, as an error.
 void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
@@ -198,20 +307,22 @@ void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOpti
     throw InvalidInputError("limit evaluation: " + name + " has no exact evaluator (" + catmull_clark + " and " + loop +
                             " have)");
   check_refinable(mesh, scheme, options);
-  if (!mesh.tags.creases.empty() || !mesh.tags.corners.empty() || !mesh.tags.holes.empty())
-    throw InvalidInputError(
-        "limit evaluation: the mesh has crease, corner or hole tags; exact evaluation covers untagged closed meshes "
-        "so far");
+  if (!mesh.tags.holes.empty())
+    throw InvalidInputError("limit evaluation: the mesh has hole tags, which exact evaluation does not cover yet");
+  if (name == loop && (!mesh.tags.creases.empty() || !mesh.tags.corners.empty()))
+    throw InvalidInputError("limit evaluation: the mesh has crease or corner tags; " + loop +
+                            "'s exact evaluation covers untagged closed meshes so far");
   const MeshTopology t(mesh);
   for (Index v = 0; v < t.vertex_count(); ++v) {
     const VertexKind kind = t.vertex_kind(v);
-    if (kind == VertexKind::boundary)
-      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) +
-                              " is on a boundary; exact evaluation covers closed meshes so far");
-    if (kind != VertexKind::interior)
+    if (kind == VertexKind::boundary && name == loop)
+      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is on a boundary; " + loop +
+                              "'s exact evaluation covers closed meshes so far");
+    if (kind != VertexKind::interior && kind != VertexKind::boundary)
       throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is " +
                               (kind == VertexKind::isolated ? "used by no face" : "non-manifold"));
   }
+  if (name == catmull_clark) check_sharp_features(mesh, t, options);
 }
 
 }  // namespace

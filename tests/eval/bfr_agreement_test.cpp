@@ -52,8 +52,20 @@ std::unique_ptr<Far::TopologyRefiner> base_refiner(const PolygonMesh& mesh, Sdc:
   desc.numFaces = mesh.face_count();
   desc.numVertsPerFace = sizes.data();
   desc.vertIndicesPerFace = indices.data();
+  // Crease tags, and the boundary interpolation of the mesh's tags.
+  std::vector<Far::Index> crease_ends;
+  std::vector<float> crease_weights;
+  for (const CreaseTag& c : mesh.tags.creases) {
+    crease_ends.insert(crease_ends.end(), {c.v0, c.v1});
+    crease_weights.push_back(static_cast<float>(c.sharpness));
+  }
+  desc.numCreases = static_cast<int>(crease_weights.size());
+  desc.creaseVertexIndexPairs = crease_ends.data();
+  desc.creaseWeights = crease_weights.data();
   Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  options.SetVtxBoundaryInterpolation(mesh.tags.boundary_interpolation == BoundaryInterpolation::edge_only
+                                          ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
+                                          : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
   return std::unique_ptr<Far::TopologyRefiner>(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
       desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(type, options)));
 }
@@ -99,10 +111,16 @@ std::array<Vec3, 6> as_array(const LimitPoint& p) { return {p.position, p.du, p.
 struct Differences {
   double position = 0.0;
   double derivatives = 0.0;
+  int compared = 0;  ///< points
 };
 
+// Which faces are compared: all, those with an extraordinary corner, or
+// those without one (interior vertices of another valence than the
+// regular one; boundary vertices count as regular).
+enum class Faces { all, irregular, regular };
+
 Differences differences(const PolygonMesh& mesh, const char* name, Sdc::SchemeType type, int approx_level,
-                        bool only_irregular) {
+                        Faces which) {
   const LimitEvaluator evaluator(mesh, scheme(name));
   const BfrSurfaces bfr(mesh, type, approx_level);
   const bool triangles = evaluator.triangles();
@@ -112,14 +130,16 @@ Differences differences(const PolygonMesh& mesh, const char* name, Sdc::SchemeTy
   const MeshTopology t(mesh);
   for (Index f = 0; f < mesh.face_count(); ++f) {
     bool irregular = false;
-    for (const Index v : t.face_vertices(f)) irregular |= t.valence(v) != (triangles ? 6 : 4);
-    if (only_irregular && !irregular) continue;
+    for (const Index v : t.face_vertices(f))
+      irregular |= t.vertex_kind(v) == VertexKind::interior && t.valence(v) != (triangles ? 6 : 4);
+    if ((which == Faces::irregular && !irregular) || (which == Faces::regular && irregular)) continue;
     for (int k = 0; k < 12; ++k) {
       double u = unit(random), v = unit(random);
       if (triangles && u + v > 1.0) {
         u = 1.0 - u;
         v = 1.0 - v;
       }
+      ++d.compared;
       const auto ours = as_array(evaluator.evaluate(f, u, v));
       const auto theirs = bfr.evaluate(f, u, v);
       d.position = std::max(d.position, norm(ours[0] - theirs[0]));
@@ -127,17 +147,33 @@ Differences differences(const PolygonMesh& mesh, const char* name, Sdc::SchemeTy
     }
   }
   const double size = diagonal(mesh);
-  return {d.position / size, d.derivatives / size};
+  return {d.position / size, d.derivatives / size, d.compared};
 }
 
 TEST(BfrAgreement, RegularFacesAreTheSamePatches) {
-  const Differences quads = differences(grid_test::torus(8), "catmull-clark", Sdc::SCHEME_CATMARK, 2, false);
+  const Differences quads = differences(grid_test::torus(8), "catmull-clark", Sdc::SCHEME_CATMARK, 2, Faces::all);
   EXPECT_LE(quads.position, 1e-12);
   EXPECT_LE(quads.derivatives, 1e-12);
   const Differences triangles =
-      differences(grid_test::triangulated_torus(8), "loop", Sdc::SCHEME_LOOP, 2, false);
+      differences(grid_test::triangulated_torus(8), "loop", Sdc::SCHEME_LOOP, 2, Faces::all);
   EXPECT_LE(triangles.position, 1e-12);
   EXPECT_LE(triangles.derivatives, 1e-12);
+}
+
+// Boundaries, corners and infinitely sharp creases: both evaluate the
+// reflected bicubic patches (Bfr's regular boundary patches) away from
+// extraordinary vertices.
+TEST(BfrAgreement, BoundaryCreaseAndCornerFacesAreTheSamePatches) {
+  // The creased cube split once more, so that faces along the creases have
+  // no corner of valence 3.
+  const PolygonMesh creased = refine(test::creased_cube(), scheme("bilinear"), test::levels(1));
+  ASSERT_GT(creased.tags.creases.size(), 20u);
+  for (const PolygonMesh& mesh : {test::jittered(test::quad_grid(5, 4), 3), test::jittered(creased, 4)}) {
+    const Differences d = differences(mesh, "catmull-clark", Sdc::SCHEME_CATMARK, 2, Faces::regular);
+    EXPECT_GE(d.compared, 20 * 12);  // every face of the grid, 72 of the cube's 96
+    EXPECT_LE(d.position, 1e-12);
+    EXPECT_LE(d.derivatives, 1e-12);
+  }
 }
 
 // The double pyramid, jittered (split into quads for Catmull-Clark below).
@@ -155,8 +191,8 @@ TEST(BfrAgreement, NearExtraordinaryVerticesBfrApproachesTheExactSurfaceAsItIsol
                      test::jittered(refine(bipyramid(n, 3u + n), scheme("bilinear"), test::levels(1)), 9)});
   for (int n : {4, 5, 8}) cases.push_back({"loop", Sdc::SCHEME_LOOP, bipyramid(n, 5u + n)});
   for (const Case& c : cases) {
-    const Differences coarse = differences(c.mesh, c.name, c.type, 2, true);
-    const Differences fine = differences(c.mesh, c.name, c.type, 6, true);
+    const Differences coarse = differences(c.mesh, c.name, c.type, 2, Faces::irregular);
+    const Differences fine = differences(c.mesh, c.name, c.type, 6, Faces::irregular);
     std::cout << "[ bfr      ] " << c.name << ", " << c.mesh.vertex_count()
               << " vertices: Bfr's largest difference from the exact surface near extraordinary vertices, "
               << "relative to the mesh's size: " << coarse.position << " (isolation level 2), " << fine.position

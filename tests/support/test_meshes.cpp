@@ -11,6 +11,41 @@ PolygonMesh cube() {
                    {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
 }
 
+PolygonMesh creased_cube() {
+  const PolygonMesh c = cube();
+  PolygonMesh mesh;
+  // The split by hand (no refinement in the test support): corners, then a
+  // point per edge and per face, found by their coordinates.
+  const auto point = [&](Vec3 p) {
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+      if (mesh.positions[i] == p) return static_cast<Index>(i);
+    mesh.positions.push_back(p);
+    return static_cast<Index>(mesh.positions.size() - 1);
+  };
+  for (Index f = 0; f < c.face_count(); ++f) {
+    const auto v = c.face(f);
+    Vec3 centre{};
+    for (const Index i : v) centre += 0.25 * c.positions[static_cast<std::size_t>(i)];
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Vec3 a = c.positions[static_cast<std::size_t>(v[k])];
+      const Vec3 next = c.positions[static_cast<std::size_t>(v[(k + 1) % 4])];
+      const Vec3 prev = c.positions[static_cast<std::size_t>(v[(k + 3) % 4])];
+      mesh.add_face({point(a), point(0.5 * (a + next)), point(centre), point(0.5 * (a + prev))});
+    }
+  }
+  // Creases: the edges whose two ends lie on z = 1/2, or on x = 1/2.
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    const auto v = mesh.face(f);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Index a = v[k], b = v[(k + 1) % 4];
+      if (a > b) continue;  // each interior edge once (its other face has it b-a)
+      const Vec3 p = mesh.positions[static_cast<std::size_t>(a)], q = mesh.positions[static_cast<std::size_t>(b)];
+      if ((p.z == 0.5 && q.z == 0.5) || (p.x == 0.5 && q.x == 0.5)) mesh.tags.creases.push_back({a, b, kInfiniteSharpness});
+    }
+  }
+  return mesh;
+}
+
 PolygonMesh quad_grid(int n, int m) {
   PolygonMesh mesh;
   for (int j = 0; j <= m; ++j)

@@ -22,6 +22,11 @@ PolygonMesh tetrahedron();
 /// A closed double pyramid over a regular n-gon (n >= 3) in z = 0, apexes at
 /// z = 1.2 and -0.9: apexes of valence n, the equator's vertices of valence 4.
 PolygonMesh bipyramid(int n);
+/// The unit cube with each quad split into four (26 vertices), infinitely
+/// sharp creases along its equator z = 1/2 and its meridian x = 1/2: crease
+/// vertices of four edges, and two where the creases cross (corners of four
+/// sharp edges). The cube's corners keep valence 3.
+PolygonMesh creased_cube();
 /// The mesh with every vertex moved by up to 0.1 along each axis, the same
 /// for the same seed (std::mt19937).
 PolygonMesh jittered(PolygonMesh mesh, unsigned seed);
