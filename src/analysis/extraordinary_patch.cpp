@@ -22,7 +22,7 @@
 
 namespace subdiv {
 
-std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner) {
+std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner, const LevelCreasing* creasing) {
   FaceRing ring;
   // Rings are a few dozen vertices: a linear search keeps the walk's cost
   // independent of the mesh's size.
@@ -38,19 +38,48 @@ std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner) {
       c = topology.corner_next(c);
     } while (c != from);
   };
+  // An edge the walk around a vertex stops at: a boundary, or sharp.
+  const auto stops = [&](Index c) {
+    return topology.corner_across(c) == kInvalidIndex ||
+           (creasing && edge_sharpness_of(*creasing, topology.corner_edge(c)) > 0.0);
+  };
   Index c = corner;
   do {
     const Index v = topology.corner_vertex(c);
-    if (topology.vertex_kind(v) != VertexKind::interior || topology.fan_count(v) != 1) return std::nullopt;
-    // Counter-clockwise around v from the face: across the edge that
-    // enters v in each face.
+    if (topology.fan_count(v) != 1) return std::nullopt;
+    bool sharp = topology.vertex_kind(v) != VertexKind::interior;
+    if (creasing) {
+      for (const Index e : topology.vertex_edges(v)) sharp |= edge_sharpness_of(*creasing, e) > 0.0;
+    }
     Index around = c;
     int faces = 0;
-    do {
-      visit_face(around);
-      around = topology.corner_across(topology.corner_prev(around));
-      if (around == kInvalidIndex || ++faces > topology.vertex_face_count(v)) return std::nullopt;
-    } while (around != c);
+    if (!sharp) {
+      // Counter-clockwise around v from the face: across the edge that
+      // enters v in each face.
+      do {
+        visit_face(around);
+        around = topology.corner_across(topology.corner_prev(around));
+        if (around == kInvalidIndex || ++faces > topology.vertex_face_count(v)) return std::nullopt;
+      } while (around != c);
+    } else {
+      if (!creasing) return std::nullopt;
+      // The sector of the face between sharp edges: back (clockwise) to its
+      // first face, then counter-clockwise to its last; the signature notes
+      // v's rule and how far into the sector the face lies.
+      int offset = 0;
+      while (!stops(around)) {
+        around = topology.corner_next(topology.corner_across(around));
+        if (++offset > topology.vertex_face_count(v)) return std::nullopt;
+      }
+      ring.signature.push_back(-10 - static_cast<int>(creasing->vertex_rule[static_cast<std::size_t>(v)]));
+      ring.signature.push_back(-100 - offset);
+      while (true) {
+        visit_face(around);
+        if (++faces > topology.vertex_face_count(v)) return std::nullopt;
+        if (stops(topology.corner_prev(around))) break;
+        around = topology.corner_across(topology.corner_prev(around));
+      }
+    }
     ring.signature.push_back(-1);  // end of the fan
     c = topology.corner_next(c);
   } while (c != corner);
@@ -63,20 +92,36 @@ namespace {
   throw std::logic_error("extraordinary patch, valence " + std::to_string(valence) + ": " + what);
 }
 
-/// Rows `rows` of `table` as a dense matrix over the ring's columns.
-Eigen::MatrixXd rows_over_ring(const StencilTable& table, const std::vector<Index>& rows,
+/// The combinations `rows` of `table`'s rows as a dense matrix over the
+/// ring's columns.
+Eigen::MatrixXd rows_over_ring(const StencilTable& table, const std::vector<PatchStencil>& rows,
                                const std::vector<int>& column_of, int columns, int valence) {
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()), columns);
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    const auto vertices = table.row_vertices(rows[r]);
-    const auto weights = table.row_weights(rows[r]);
-    for (std::size_t e = 0; e < vertices.size(); ++e) {
-      const int column = column_of[static_cast<std::size_t>(vertices[e])];
-      if (column < 0) inconsistent(valence, "a child row reads a vertex outside the face ring");
-      m(static_cast<Eigen::Index>(r), column) += weights[e];
+    for (int i = 0; i < rows[r].size; ++i) {
+      const Index row = rows[r].vertex[static_cast<std::size_t>(i)];
+      const double w = rows[r].weight[static_cast<std::size_t>(i)];
+      const auto vertices = table.row_vertices(row);
+      const auto weights = table.row_weights(row);
+      for (std::size_t e = 0; e < vertices.size(); ++e) {
+        const int column = column_of[static_cast<std::size_t>(vertices[e])];
+        if (column < 0) inconsistent(valence, "a child row reads a vertex outside the face ring");
+        m(static_cast<Eigen::Index>(r), column) += w * weights[e];
+      }
     }
   }
   return m;
+}
+
+/// Plain rows: each a vertex of weight 1.
+std::vector<PatchStencil> plain_rows(std::span<const Index> vertices) {
+  std::vector<PatchStencil> rows(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    rows[i].vertex[0] = vertices[i];
+    rows[i].weight[0] = 1.0;
+    rows[i].size = 1;
+  }
+  return rows;
 }
 
 /// A regular child's frame in F's parameters: its origin and its axes'
@@ -95,21 +140,43 @@ constexpr std::array<ChildFrame, 3> kTriangleChildren = {{{{0.5, 0.0}, {0.5, 0.5
 
 }  // namespace
 
-ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(split), valence_(valence) {
+ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence)
+    : ExtraordinaryPatch(split, Configuration{Configuration::Kind::interior, valence}, 0) {}
+
+ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position)
+    : split_(split), valence_(configuration.k), configuration_(configuration), position_(position) {
   if (split != SplitRule::quad && split != SplitRule::triangle) {
     throw InvalidInputError("extraordinary patch: only the quad and triangle splits have one");
   }
-  if (valence < 3) throw InvalidInputError("extraordinary patch: valence " + std::to_string(valence) + " is below 3");
+  const bool interior = configuration.kind == Configuration::Kind::interior;
+  const int valence = configuration.k;
+  if (interior && valence < 3)
+    throw InvalidInputError("extraordinary patch: valence " + std::to_string(valence) + " is below 3");
+  if (!interior && split != SplitRule::quad)
+    throw InvalidInputError("extraordinary patch: " + configuration.name() + " is built for the quad split only");
+  if (!interior && (valence < 1 || position < 0 || position >= valence))
+    throw InvalidInputError("extraordinary patch: " + configuration.name() + " has no face " + std::to_string(position));
   const bool quads = split == SplitRule::quad;
-  Configuration configuration;
-  configuration.kind = Configuration::Kind::interior;
-  configuration.k = valence;
-  // Four rings keep the ring mesh's boundary rules away from every row read.
+  // Four rings keep the ring mesh's own boundary away from every row read.
+  // Its boundary edges are sharp, and a boundary centre keeps the crease
+  // rule whatever its face count (edge_only), unless it is a corner.
   const RingMesh model = ring_mesh(split, configuration, 4);
   const MeshTopology parent(model.mesh);
-  const Index corner = parent.vertex_corners(model.centre)[0];
-  const std::optional<FaceRing> ring = face_ring(parent, corner);
-  if (!ring || ring->vertices.size() != static_cast<std::size_t>(quads ? 2 * valence + 8 : valence + 6)) {
+  const auto creasing_of = [](const PolygonMesh& mesh, const MeshTopology& topology) {
+    return compute_creasing(mesh, topology, BoundaryInterpolation::edge_only, CreaseMethod::uniform);
+  };
+  const LevelCreasing parent_creasing = creasing_of(model.mesh, parent);
+  // F: the face `position` steps counter-clockwise from the sector's first
+  // (its edge leaving the centre is the boundary); any face of an interior
+  // vertex.
+  Index corner = parent.vertex_corners(model.centre)[0];
+  if (!interior) {
+    for (const Index c : parent.vertex_corners(model.centre))
+      if (parent.corner_across(c) == kInvalidIndex) corner = c;
+    for (int i = 0; i < position; ++i) corner = parent.corner_across(parent.corner_prev(corner));
+  }
+  const std::optional<FaceRing> ring = face_ring(parent, corner, &parent_creasing);
+  if (!ring || (interior && ring->vertices.size() != static_cast<std::size_t>(quads ? 2 * valence + 8 : valence + 6))) {
     inconsistent(valence, "the model face's ring has another size than 2N + 8 (quads) or N + 6 (triangles)");
   }
   signature_ = ring->signature;
@@ -121,10 +188,18 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(sp
   RefineOptions one_step;
   one_step.levels = 1;
   one_step.regular_grids = false;
+  one_step.boundary = BoundaryInterpolation::edge_only;
   const StencilTable table = refine_stencil_table(model.mesh, quads ? catmull_clark_scheme() : loop_scheme(), one_step);
   PolygonMesh child_mesh;
   const SplitMap map = split_topology(model.mesh, parent, split, child_mesh);
+  // The corner tag carries to the child centre (infinitely sharp).
+  for (const CornerTag& tag : model.mesh.tags.corners) {
+    CornerTag child_tag = tag;
+    child_tag.vertex = map.vertex_point(tag.vertex);
+    child_mesh.tags.corners.push_back(child_tag);
+  }
   const MeshTopology child(child_mesh);
+  const LevelCreasing child_creasing = creasing_of(child_mesh, child);
 
   // The parameter of each child vertex of F in F's frame.
   constexpr std::array<std::array<double, 2>, 4> kQuadCorner = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
@@ -158,25 +233,25 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence) : split_(sp
   };
   const auto children_of_F = child_faces(parent, split, parent.corner_face(corner));
   const Index centre_child = corner_at(child, parameter, children_of_F, {{0.0, 0.0}, {0.5, 0.5}});
-  const std::optional<FaceRing> child_ring = face_ring(child, centre_child);
+  const std::optional<FaceRing> child_ring = face_ring(child, centre_child, &child_creasing);
   if (!child_ring || child_ring->signature != signature_) inconsistent(valence_, "the centre child's ring differs");
-  A_ = rows_over_ring(table, child_ring->vertices, column_of, size, valence_);
+  A_ = rows_over_ring(table, plain_rows(child_ring->vertices), column_of, size, valence_);
   // A regular piece: the patch points at `origin` of `mesh`, as rows of
   // `stencils` over the ring.
   const auto piece = [&](const MeshTopology& mesh, const StencilTable& stencils, Index origin, const ChildFrame& frame) {
-    std::vector<Index> rows;
+    std::vector<PatchStencil> rows;
     if (quads) {
-      const auto points = bicubic_patch_points(mesh, origin);
+      const auto points = bicubic_patch_stencils(mesh, child_creasing, origin);
       if (points) rows.assign(points->begin(), points->end());
     } else {
       const auto points = box_spline_patch_points(mesh, origin);
-      if (points) rows.assign(points->begin(), points->end());
+      if (points) rows = plain_rows(*points);
     }
     if (rows.empty()) inconsistent(valence_, "a regular piece has no regular patch");
     children_.push_back({rows_over_ring(stencils, rows, column_of, size, valence_), frame.origin, frame.axis});
   };
   const auto& frames = quads ? kQuadChildren : kTriangleChildren;
-  const bool middle_split = !quads && valence == 3;
+  const bool middle_split = !quads && interior && valence == 3;
   for (std::size_t k = 0; k < (middle_split ? 2 : 3); ++k)
     piece(child, table, corner_at(child, parameter, children_of_F, frames[k]), frames[k]);
   if (middle_split) {

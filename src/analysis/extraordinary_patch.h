@@ -45,6 +45,8 @@
 
 #include "subdiv/core/types.h"
 #include "subdiv/mesh/topology.h"
+#include "subdiv/refine/configuration.h"
+#include "subdiv/refine/creasing.h"
 #include "subdiv/topology/split.h"
 
 namespace subdiv {
@@ -64,10 +66,17 @@ struct FaceRing {
 /// The face ring of the face holding `corner` (FaceRing).
 /// \param topology the mesh's topology.
 /// \param corner the corner the walk starts at.
-/// \return the ring; empty where a corner of the face is not an interior
-///   vertex with one closed fan.
+/// \param creasing the level's creasing, or null: without it every corner
+///   must be an interior vertex with one closed fan; with it, around a
+///   corner with sharp edges (or on a boundary) the walk covers the face's
+///   sector between sharp edges only, from its first face, and the
+///   signature records the corner's rule and the face's place in the
+///   sector (the sectors beyond are decoupled by the sharp edges).
+/// \return the ring; empty where the walk fails (see \p creasing, or a
+///   vertex with several fans).
 /// \pre \p corner is in [0, topology.corner_count()) (unchecked).
-std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner);
+std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner,
+                                  const LevelCreasing* creasing = nullptr);
 
 /// The patch at an extraordinary corner of valence N, read off the scheme's
 /// refinement of the ring mesh (see the file comment): Catmull-Clark for the
@@ -81,11 +90,27 @@ class ExtraordinaryPatch {
   ///   the expected structure (an internal inconsistency).
   ExtraordinaryPatch(SplitRule split, int valence);
 
+  /// Builds the model of face `position` of a boundary or corner sector of
+  /// k faces (Configuration), counted counter-clockwise from the face on the
+  /// sector's first sharp edge: the quad split only. The sector's sharp
+  /// edges keep the crease rule at the centre (a boundary of any face count,
+  /// or one side of a crease) or its corner rule (a corner). An interior
+  /// configuration is the (split, valence) model.
+  /// \throws InvalidInputError for a position outside [0, k), a sector of
+  ///   the triangle split, or as the other constructor.
+  /// \throws std::logic_error as the other constructor.
+  ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position);
+
   /// \return the split (quad: Catmull-Clark, triangle: Loop).
   SplitRule split() const noexcept { return split_; }
-  /// \return the valence N.
+  /// \return the valence N (interior), or the sector's face count k.
   int valence() const noexcept { return valence_; }
-  /// \return the face-ring size: 2N + 8 (quad split), N + 6 (triangle split).
+  /// \return the configuration at the corner.
+  const Configuration& configuration() const noexcept { return configuration_; }
+  /// \return F's place in a boundary or corner sector (0 for interior).
+  int position() const noexcept { return position_; }
+  /// \return the face-ring size: 2N + 8 (quad split), N + 6 (triangle split)
+  ///   for an interior corner; a sector's own walk's size otherwise.
   int size() const noexcept { return static_cast<int>(A_.rows()); }
   /// \return the signature of the model face's ring: a mesh face whose ring
   ///   has it (from the extraordinary corner) is evaluated by this patch.
@@ -150,6 +175,8 @@ class ExtraordinaryPatch {
 
   SplitRule split_ = SplitRule::quad;
   int valence_ = 0;
+  Configuration configuration_;
+  int position_ = 0;
   Eigen::MatrixXd A_;              // K x K
   // The regular pieces of F outside its centre child: its other three
   // children, except Loop at valence 3, where the middle child's four

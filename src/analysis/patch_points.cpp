@@ -116,6 +116,12 @@ bool is_patch_corner(const MeshTopology& topology, const LevelCreasing& creasing
 
 }  // namespace
 
+bool is_regular_patch_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index corner) {
+  return topology.face_size(topology.corner_face(corner)) == 4 &&
+         is_patch_corner(topology, creasing, corner, is_infinitely_sharp(creasing, topology.corner_edge(corner)),
+                         is_infinitely_sharp(creasing, topology.corner_edge(topology.corner_prev(corner))));
+}
+
 std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTopology& topology,
                                                                   const LevelCreasing& creasing, Index corner) {
   const Index face = topology.corner_face(corner);

@@ -57,6 +57,15 @@ struct PatchStencil {
 std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTopology& topology,
                                                                   const LevelCreasing& creasing, Index corner);
 
+/// Whether the vertex at `corner` is one of bicubic_patch_stencils' corner
+/// kinds for the quad holding `corner`.
+/// \param topology the level's topology.
+/// \param creasing the level's creasing.
+/// \param corner a corner of a quad.
+/// \return whether it is.
+/// \pre \p corner is in [0, topology.corner_count()) (unchecked).
+bool is_regular_patch_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index corner);
+
 /// The box-spline patch of the triangle that holds `corner`, with that
 /// corner at lattice point (0, 0), the next corner of its face at (1, 0) and
 /// the previous one at (0, 1).

@@ -142,10 +142,40 @@ class LimitEvaluator::Builder {
     return true;
   }
 
-  const ExtraordinaryPatch& model(int valence) {
-    auto& slot = out_.patches_[valence];
-    if (!slot) slot = std::make_unique<ExtraordinaryPatch>(out_.triangles_ ? SplitRule::triangle : SplitRule::quad, valence);
+  const ExtraordinaryPatch& model(const Configuration& configuration, int position) {
+    auto& slot = out_.patches_[{static_cast<int>(configuration.kind), configuration.k, position}];
+    if (!slot)
+      slot = std::make_unique<ExtraordinaryPatch>(out_.triangles_ ? SplitRule::triangle : SplitRule::quad, configuration,
+                                                  position);
     return *slot;
+  }
+
+  // The model configuration of the extraordinary corner `corner` (its
+  // vertex's and its face's place): a smooth interior vertex, or a boundary
+  // vertex whose only sharp edges are its two boundary edges (the crease
+  // rule: a boundary sector; the corner rule: a corner sector); else none.
+  std::optional<std::pair<Configuration, int>> configuration_at(int level, Index corner) {
+    const MeshTopology& t = topology(level);
+    const Index v = t.corner_vertex(corner);
+    const Index valence = t.valence(v);
+    if (t.vertex_kind(v) == VertexKind::interior) {
+      if (!is_smooth_vertex(level, v)) return std::nullopt;
+      return std::pair{Configuration{Configuration::Kind::interior, static_cast<int>(valence)}, 0};
+    }
+    const LevelCreasing& c = creasing(level);
+    const VertexRule rule = c.vertex_rule[static_cast<std::size_t>(v)];
+    if (t.vertex_kind(v) != VertexKind::boundary || (rule != VertexRule::crease && rule != VertexRule::corner))
+      return std::nullopt;
+    int sharp = 0;
+    for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) > 0.0 ? 1 : 0;
+    if (sharp != 2) return std::nullopt;
+    // The face's place: clockwise steps to the sector's first face.
+    int position = 0;
+    for (Index around = corner; t.corner_across(around) != kInvalidIndex; ++position)
+      around = t.corner_next(t.corner_across(around));
+    Configuration configuration{rule == VertexRule::crease ? Configuration::Kind::boundary : Configuration::Kind::corner,
+                                static_cast<int>(t.vertex_face_count(v))};
+    return std::pair{configuration, position};
   }
 
   void add_leaf(int level, const Frame& frame, const ExtraordinaryPatch* patch, std::span<const Index> points,
@@ -167,20 +197,24 @@ class LimitEvaluator::Builder {
       } else if (const auto stencils = bicubic_patch_stencils(t, creasing(level), first)) {
         return add_leaf(level, frame, nullptr, control_points(level, *stencils));
       }
+      // One extraordinary corner, the others regular: its model's patch.
       int irregular = 0;
       Index corner = first;
-      for (Index k = 0; k < size; ++k)
-        if (!is_regular_vertex(level, t.corner_vertex(first + k))) {
+      for (Index k = 0; k < size; ++k) {
+        const bool regular = out_.triangles_ ? is_regular_vertex(level, t.corner_vertex(first + k))
+                                             : is_regular_patch_corner(t, creasing(level), first + k);
+        if (!regular) {
           ++irregular;
           corner = first + k;
         }
-      const Index vertex = t.corner_vertex(corner);
-      if (irregular == 1 && t.vertex_kind(vertex) == VertexKind::interior && is_smooth_vertex(level, vertex)) {
-        const ExtraordinaryPatch& patch = model(static_cast<int>(t.valence(vertex)));
-        const auto ring = face_ring(t, corner);
+      }
+      const auto configuration = irregular == 1 ? configuration_at(level, corner) : std::nullopt;
+      if (configuration) {
+        const ExtraordinaryPatch& patch = model(configuration->first, configuration->second);
+        const auto ring = face_ring(t, corner, &creasing(level));
         if (ring && ring->signature == patch.signature())
           return add_leaf(level, detail::frame_at_corner(frame, static_cast<int>(corner - first), out_.triangles_),
-                          &patch, ring->vertices, corner_normal(level, vertex));
+                          &patch, ring->vertices, corner_normal(level, t.corner_vertex(corner)));
       }
     }
     const Index first = t.face_first_corner(face);
@@ -279,22 +313,28 @@ void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const 
       case VertexRule::dart:
         throw InvalidInputError(vertex + " ends a crease (a dart); exact evaluation covers creases that run through");
       case VertexRule::crease:
-        if (t.vertex_kind(v) == VertexKind::boundary) {
-          if (t.vertex_face_count(v) != 2)
-            throw InvalidInputError(vertex + " is a boundary vertex of " + std::to_string(t.vertex_face_count(v)) +
-                                    " faces; exact evaluation covers boundary vertices of 2 faces, and corners");
-        } else if (t.valence(v) != 4 || std::any_of(corners.begin(), corners.end(), [&](Index corner) {
-                     return between_sharp_edges(t, c, corner);
-                   })) {
+        // On a boundary: any number of faces (a boundary sector's model).
+        if (t.vertex_kind(v) != VertexKind::boundary &&
+            (t.valence(v) != 4 || std::any_of(corners.begin(), corners.end(), [&](Index corner) {
+               return between_sharp_edges(t, c, corner);
+             }))) {
           throw InvalidInputError(vertex + " lies on a crease with " + std::to_string(t.valence(v)) +
                                   " edges; exact evaluation covers creases straight through vertices of 4 edges");
         }
         break;
-      case VertexRule::corner:
-        if (!std::all_of(corners.begin(), corners.end(), [&](Index corner) { return between_sharp_edges(t, c, corner); }))
-          throw InvalidInputError(vertex + " is a corner with a face between smooth edges; exact evaluation covers "
-                                           "corners whose faces lie between sharp edges");
+      case VertexRule::corner: {
+        // Every face between sharp edges (regular corner patches), or a
+        // boundary corner with no other sharp edge (a corner sector's model).
+        int sharp = 0;
+        for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) > 0.0 ? 1 : 0;
+        const bool sector = t.vertex_kind(v) == VertexKind::boundary && sharp == 2;
+        if (!sector &&
+            !std::all_of(corners.begin(), corners.end(), [&](Index corner) { return between_sharp_edges(t, c, corner); }))
+          throw InvalidInputError(vertex + " is a corner with a face between smooth edges, off a boundary or beside "
+                                           "other sharp edges; exact evaluation covers boundary corners without other "
+                                           "sharp edges, and corners whose faces all lie between sharp edges");
         break;
+      }
     }
   }
 }

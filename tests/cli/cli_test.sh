@@ -198,10 +198,13 @@ printf '0 1.5 0.5\n' > "$work/at_outside.txt"
 run eval-outside 1 eval "$meshes/cube.obj" --at "$work/at_outside.txt" && stderr_one_line eval-outside &&
   stderr_has eval-outside "is outside ptex face 0"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/one_quad.obj"
-run eval-boundary 1 eval "$work/one_quad.obj" --at "$work/at.txt" && stderr_one_line eval-boundary &&
-  stderr_has eval-boundary "one_quad.obj: limit evaluation: vertex 0 is on a boundary"
-run eval-tags 1 eval "$meshes/l_shape.obj" --at "$work/at.txt" && stderr_one_line eval-tags &&
-  stderr_has eval-tags "l_shape.obj: limit evaluation: the mesh has crease, corner or hole tags"
+printf '0 0 0\n0 0.5 0.5\n' > "$work/at_quad.txt"
+# A lone quad: four corners (the corner rule), the surface their bilinear patch.
+run eval-boundary 0 eval "$work/one_quad.obj" --at "$work/at_quad.txt" && stdout_has eval-boundary "0 0 0 0 0 1" &&
+  stdout_has eval-boundary "0.5 0.5 0 0 0 1"
+# Its concave corner has faces between smooth edges: not covered.
+run eval-corner-tag 1 eval "$meshes/l_shape.obj" --at "$work/at.txt" && stderr_one_line eval-corner-tag &&
+  stderr_has eval-corner-tag "l_shape.obj: limit evaluation: vertex 12 is a corner with a face between smooth edges"
 run eval-into-input 1 eval "$meshes/cube.obj" --at "$work/at.txt" -o "$work/at.txt" && stderr_one_line eval-into-input &&
   stderr_has eval-into-input "output is the input file"
 run eval-scheme 1 eval "$meshes/cube.obj" -s doo-sabin --at "$work/at.txt" && stderr_one_line eval-scheme &&

@@ -19,6 +19,7 @@
 #include "refine/grid_test_support.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/core/error.h"
+#include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/creasing.h"
 #include "subdiv/refine/hierarchy.h"
@@ -169,6 +170,32 @@ PolygonMesh open_cube() {
   for (Index f = 0; f < c.face_count(); ++f)
     if (f != 1) mesh.add_face(c.face(f));  // face 1 is the top, z = 1
   return mesh;
+}
+
+// A fan of three quads around boundary vertex 0 (a boundary sector of
+// three faces).
+PolygonMesh fan_of_three() {
+  PolygonMesh fan;
+  fan.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}, {0, -1, 0}};
+  fan.add_face({0, 1, 2, 3});
+  fan.add_face({0, 3, 4, 5});
+  fan.add_face({0, 5, 6, 7});
+  return fan;
+}
+
+// The fan split once, so that it has interior faces too.
+PolygonMesh boundary_fan() { return refine(fan_of_three(), scheme("bilinear"), test::levels(1)); }
+
+TEST(LimitEvaluator, ExtraordinaryBoundaryVerticesAndCornersEqualTheLimitsAtDyadicPoints) {
+  // Boundary vertices of three faces.
+  expect_equals_limits_at_dyadic_points(test::jittered(boundary_fan(), 11), "catmull-clark", 4);
+  // Boundary vertices of one face with the crease rule (edge_only).
+  PolygonMesh grid = test::jittered(test::quad_grid(3, 3), 12);
+  grid.tags.boundary_interpolation = BoundaryInterpolation::edge_only;
+  grid.tags.boundary_interpolation_set = true;
+  expect_equals_limits_at_dyadic_points(grid, "catmull-clark", 4);
+  // A concave corner of three faces, tagged.
+  expect_equals_limits_at_dyadic_points(read_mesh(test::bundled_path("l_shape.obj")).mesh, "catmull-clark", 4);
 }
 
 TEST(LimitEvaluator, BoundariesCreasesAndCornersEqualTheLimitsAtDyadicPoints) {
@@ -354,17 +381,15 @@ TEST(LimitEvaluator, RefusesWhatItDoesNotCover) {
   refused(tagged, "catmull-clark", "(a dart)");
   tagged.tags.creases.clear();
   tagged.tags.corners = {CornerTag{0, kInfiniteSharpness, CornerType::unspecified, std::nullopt}};
-  refused(tagged, "catmull-clark", "is a corner with a face between smooth edges");
+  refused(tagged, "catmull-clark", "vertex 0 is a corner with a face between smooth edges, off a boundary");
   tagged.tags.corners.clear();
   tagged.tags.holes = {0};
   refused(tagged, "catmull-clark", "hole tags");
-  // A boundary vertex with three faces around it.
-  PolygonMesh fan;
-  fan.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}, {0, -1, 0}};
-  fan.add_face({0, 1, 2, 3});
-  fan.add_face({0, 3, 4, 5});
-  fan.add_face({0, 5, 6, 7});
-  refused(fan, "catmull-clark", "vertex 0 is a boundary vertex of 3 faces");
+  // A boundary vertex of three faces with a crease between two of them
+  // (three sharp edges: the corner rule), one face between smooth edges.
+  PolygonMesh fan = fan_of_three();
+  fan.tags.creases = {{0, 3, kInfiniteSharpness}};
+  refused(fan, "catmull-clark", "vertex 0 is a corner with a face between smooth edges");
 
   const LimitEvaluator evaluator(test::cube(), scheme("catmull-clark"));
   EXPECT_EQ(evaluator.ptex_face_count(), 6);

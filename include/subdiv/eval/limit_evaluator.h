@@ -159,7 +159,9 @@ class LimitEvaluator {
   std::vector<Leaf> leaves_;
   std::vector<Vec3> positions_;     ///< the kept levels' positions, coarse first
   std::vector<Index> control_;      ///< every leaf's control points (into positions_), leaf after leaf
-  std::map<int, std::unique_ptr<ExtraordinaryPatch>> patches_;  ///< by valence
+  /// The extraordinary patches' models, by configuration kind, valence or
+  /// face count, and place in the sector.
+  std::map<std::array<int, 3>, std::unique_ptr<ExtraordinaryPatch>> patches_;
 };
 
 }  // namespace subdiv
