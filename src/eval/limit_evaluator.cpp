@@ -151,31 +151,44 @@ class LimitEvaluator::Builder {
   }
 
   // The model configuration of the extraordinary corner `corner` (its
-  // vertex's and its face's place): a smooth interior vertex, or a boundary
-  // vertex whose only sharp edges are its two boundary edges (the crease
-  // rule: a boundary sector; the corner rule: a corner sector); else none.
+  // vertex's and its face's place): a smooth interior vertex, or the sector
+  // between sharp edges (boundaries, infinitely sharp creases) that holds
+  // the face, at a vertex with the crease rule (a boundary sector's model)
+  // or the corner rule (a corner sector's); else none (a dart).
   std::optional<std::pair<Configuration, int>> configuration_at(int level, Index corner) {
     const MeshTopology& t = topology(level);
     const Index v = t.corner_vertex(corner);
-    const Index valence = t.valence(v);
-    if (t.vertex_kind(v) == VertexKind::interior) {
-      if (!is_smooth_vertex(level, v)) return std::nullopt;
-      return std::pair{Configuration{Configuration::Kind::interior, static_cast<int>(valence)}, 0};
-    }
+    if (t.vertex_kind(v) == VertexKind::interior && is_smooth_vertex(level, v))
+      return std::pair{Configuration{Configuration::Kind::interior, static_cast<int>(t.valence(v))}, 0};
+    const VertexRule rule = creasing(level).vertex_rule[static_cast<std::size_t>(v)];
+    if (rule != VertexRule::crease && rule != VertexRule::corner) return std::nullopt;
+    const auto sector = sector_faces(level, corner);
+    if (!sector) return std::nullopt;
+    const auto position = static_cast<int>(std::find(sector->begin(), sector->end(), corner) - sector->begin());
+    return std::pair{Configuration{rule == VertexRule::crease ? Configuration::Kind::boundary : Configuration::Kind::corner,
+                                   static_cast<int>(sector->size())},
+                     position};
+  }
+
+  // The corners at `corner`'s vertex of the faces of its sector between
+  // sharp edges (or boundary edges), counter-clockwise from the first.
+  std::optional<std::vector<Index>> sector_faces(int level, Index corner) {
+    const MeshTopology& t = topology(level);
     const LevelCreasing& c = creasing(level);
-    const VertexRule rule = c.vertex_rule[static_cast<std::size_t>(v)];
-    if (t.vertex_kind(v) != VertexKind::boundary || (rule != VertexRule::crease && rule != VertexRule::corner))
-      return std::nullopt;
-    int sharp = 0;
-    for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) > 0.0 ? 1 : 0;
-    if (sharp != 2) return std::nullopt;
-    // The face's place: clockwise steps to the sector's first face.
-    int position = 0;
-    for (Index around = corner; t.corner_across(around) != kInvalidIndex; ++position)
-      around = t.corner_next(t.corner_across(around));
-    Configuration configuration{rule == VertexRule::crease ? Configuration::Kind::boundary : Configuration::Kind::corner,
-                                static_cast<int>(t.vertex_face_count(v))};
-    return std::pair{configuration, position};
+    const auto stops = [&](Index k) {
+      return t.corner_across(k) == kInvalidIndex || edge_sharpness_of(c, t.corner_edge(k)) > 0.0;
+    };
+    const Index faces = t.vertex_face_count(t.corner_vertex(corner));
+    Index around = corner;
+    for (Index steps = 0; !stops(around); around = t.corner_next(t.corner_across(around)))
+      if (++steps > faces) return std::nullopt;  // no sharp edge: not a sector
+    std::vector<Index> sector{around};
+    while (!stops(t.corner_prev(around))) {
+      around = t.corner_across(t.corner_prev(around));
+      sector.push_back(around);
+      if (static_cast<Index>(sector.size()) > faces) return std::nullopt;
+    }
+    return sector;
   }
 
   void add_leaf(int level, const Frame& frame, const ExtraordinaryPatch* patch, std::span<const Index> points,
@@ -214,7 +227,7 @@ class LimitEvaluator::Builder {
         const auto ring = face_ring(t, corner, &creasing(level));
         if (ring && ring->signature == patch.signature())
           return add_leaf(level, detail::frame_at_corner(frame, static_cast<int>(corner - first), out_.triangles_),
-                          &patch, ring->vertices, corner_normal(level, t.corner_vertex(corner)));
+                          &patch, ring->vertices, corner_normal(level, corner));
       }
     }
     const Index first = t.face_first_corner(face);
@@ -253,21 +266,61 @@ class LimitEvaluator::Builder {
     return points;
   }
 
-  // The unit normal at an extraordinary vertex, from the scheme's tangent masks.
-  Vec3 corner_normal(int level, Index vertex) {
+  // The unit normal at an extraordinary corner, from the scheme's tangent
+  // masks. In a sector, the masks of the sector alone: its faces as a mesh
+  // of their own, the vertex on its boundary with its rule (the sector's
+  // side of a crease has its own normal).
+  Vec3 corner_normal(int level, Index corner) {
     const MeshTopology& t = topology(level);
     const PolygonMesh& mesh = hierarchy_.levels[static_cast<std::size_t>(level)].mesh;
-    // Read only: no vertex is semi-sharp where an extraordinary patch applies.
-    if (semi_sharp_.size() < static_cast<std::size_t>(mesh.vertex_count()))
-      semi_sharp_.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+    const Index vertex = t.corner_vertex(corner);
+    std::optional<detail::VertexLimit> limit;
     LimitMasks scratch;
-    const auto limit = detail::closed_form_limit(
-        scheme_, detail::LimitLevel{t, creasing(level), mesh.positions, semi_sharp_}, vertex, scratch);
+    if (t.vertex_kind(vertex) == VertexKind::interior && is_smooth_vertex(level, vertex)) {
+      // Read only: no vertex is semi-sharp where an extraordinary patch applies.
+      if (semi_sharp_.size() < static_cast<std::size_t>(mesh.vertex_count()))
+        semi_sharp_.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+      limit = detail::closed_form_limit(scheme_, detail::LimitLevel{t, creasing(level), mesh.positions, semi_sharp_},
+                                        vertex, scratch);
+    } else {
+      PolygonMesh sector;
+      std::vector<Index> local(static_cast<std::size_t>(mesh.vertex_count()), kInvalidIndex);
+      const auto add = [&](Index v) {
+        Index& slot = local[static_cast<std::size_t>(v)];
+        if (slot == kInvalidIndex) {
+          slot = static_cast<Index>(sector.positions.size());
+          sector.positions.push_back(mesh.positions[static_cast<std::size_t>(v)]);
+        }
+        return slot;
+      };
+      const auto faces = sector_faces(level, corner);
+      if (!faces) throw std::logic_error("limit evaluation: an extraordinary corner's sector has no sharp edge");
+      for (const Index c : *faces) {
+        std::vector<Index> face;
+        Index k = c;
+        do {
+          face.push_back(add(t.corner_vertex(k)));
+          k = t.corner_next(k);
+        } while (k != c);
+        sector.add_face(face);
+      }
+      if (creasing(level).vertex_rule[static_cast<std::size_t>(vertex)] == VertexRule::corner)
+        sector.tags.corners.push_back({local[static_cast<std::size_t>(vertex)], kInfiniteSharpness, CornerType::unspecified,
+                                       std::nullopt});
+      const MeshTopology sector_topology(sector);
+      const LevelCreasing sector_creasing =
+          compute_creasing(sector, sector_topology, BoundaryInterpolation::edge_only, CreaseMethod::uniform);
+      const std::vector<char> none(sector.positions.size(), 0);
+      limit = detail::closed_form_limit(
+          scheme_, detail::LimitLevel{sector_topology, sector_creasing, sector.positions, none},
+          local[static_cast<std::size_t>(vertex)], scratch);
+    }
     if (!limit) throw std::logic_error("limit evaluation: no tangent masks at an isolated extraordinary vertex");
     const Vec3 n = cross(limit->tangent1, limit->tangent2);
     const double length = norm(n);
     return length > 0.0 ? (1.0 / length) * n : Vec3{};
   }
+
 
   LimitEvaluator& out_;
   const Scheme& scheme_;
@@ -282,15 +335,9 @@ class LimitEvaluator::Builder {
 
 namespace {
 
-// The first element the evaluator cannot handle, as an error.
-// Whether both of the face's edges at corner c are infinitely sharp.
-bool between_sharp_edges(const MeshTopology& t, const LevelCreasing& c, Index corner) {
-  return edge_sharpness_of(c, t.corner_edge(corner)) >= kInfiniteSharpness &&
-         edge_sharpness_of(c, t.corner_edge(t.corner_prev(corner))) >= kInfiniteSharpness;
-}
-
-// Catmull-Clark's sharp features: those whose faces isolate into regular
-// boundary, crease and corner patches (patch_points.h).
+// Catmull-Clark's sharp features: infinitely sharp edges (boundaries,
+// creases) and corners split the faces around a vertex into sectors, each
+// evaluated by its own patches; semi-sharp features and darts are not.
 void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const RefineOptions& options) {
   const LevelCreasing c = compute_creasing(mesh, t, boundary_of(mesh, options), crease_method_of(mesh, options));
   for (Index e = 0; e < t.edge_count(); ++e) {
@@ -306,35 +353,14 @@ void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const 
     const std::string vertex = "limit evaluation: vertex " + std::to_string(v);
     if (c.vertex_rule[i] != c.child_vertex_rule[i])
       throw InvalidInputError(vertex + " has a semi-sharp corner tag; exact evaluation covers infinitely sharp ones");
-    const auto corners = t.vertex_corners(v);
-    switch (c.vertex_rule[i]) {
-      case VertexRule::smooth:
-        break;
-      case VertexRule::dart:
-        throw InvalidInputError(vertex + " ends a crease (a dart); exact evaluation covers creases that run through");
-      case VertexRule::crease:
-        // On a boundary: any number of faces (a boundary sector's model).
-        if (t.vertex_kind(v) != VertexKind::boundary &&
-            (t.valence(v) != 4 || std::any_of(corners.begin(), corners.end(), [&](Index corner) {
-               return between_sharp_edges(t, c, corner);
-             }))) {
-          throw InvalidInputError(vertex + " lies on a crease with " + std::to_string(t.valence(v)) +
-                                  " edges; exact evaluation covers creases straight through vertices of 4 edges");
-        }
-        break;
-      case VertexRule::corner: {
-        // Every face between sharp edges (regular corner patches), or a
-        // boundary corner with no other sharp edge (a corner sector's model).
-        int sharp = 0;
-        for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) > 0.0 ? 1 : 0;
-        const bool sector = t.vertex_kind(v) == VertexKind::boundary && sharp == 2;
-        if (!sector &&
-            !std::all_of(corners.begin(), corners.end(), [&](Index corner) { return between_sharp_edges(t, c, corner); }))
-          throw InvalidInputError(vertex + " is a corner with a face between smooth edges, off a boundary or beside "
-                                           "other sharp edges; exact evaluation covers boundary corners without other "
-                                           "sharp edges, and corners whose faces all lie between sharp edges");
-        break;
-      }
+    if (c.vertex_rule[i] == VertexRule::dart)
+      throw InvalidInputError(vertex + " ends a crease (a dart); exact evaluation covers creases that run through");
+    if (c.vertex_rule[i] == VertexRule::corner) {
+      int sharp = 0;
+      for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) > 0.0 ? 1 : 0;
+      if (sharp < 2)
+        throw InvalidInputError(vertex + " is a corner where " + std::to_string(sharp) +
+                                " sharp edges meet; exact evaluation covers corners between two or more sharp edges");
     }
   }
 }
