@@ -367,6 +367,7 @@ void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const 
 
 // The first element the evaluator cannot handle, as an error.
 void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
+
   // The patches model exactly these two schemes' rules.
   const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name);
   if (name != catmull_clark && name != loop)
@@ -387,6 +388,10 @@ void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOpti
     if (kind != VertexKind::interior && kind != VertexKind::boundary)
       throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is " +
                               (kind == VertexKind::isolated ? "used by no face" : "non-manifold"));
+    if (kind == VertexKind::interior && t.valence(v) < 3)
+      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " has valence " +
+                              std::to_string(t.valence(v)) + "; exact evaluation covers interior vertices of valence 3 "
+                              "and more");
   }
   if (name == catmull_clark) check_sharp_features(mesh, t, options);
 }

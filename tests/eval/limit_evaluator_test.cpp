@@ -446,6 +446,10 @@ TEST(LimitEvaluator, RefusesWhatItDoesNotCover) {
   tagged.tags.corners.clear();
   tagged.tags.holes = {0};
   refused(tagged, "catmull-clark", "hole tags");
+  // Two quads glued along their four edges: vertices of valence 2.
+  PolygonMesh pillow = test::quad_grid(1, 1);
+  pillow.add_face({0, 2, 3, 1});
+  refused(pillow, "catmull-clark", "vertex 0 has valence 2");
 
   const LimitEvaluator evaluator(test::cube(), scheme("catmull-clark"));
   EXPECT_EQ(evaluator.ptex_face_count(), 6);
