@@ -36,6 +36,10 @@ namespace {
 // vertices); more means a small mesh whose patches reach a vertex twice.
 constexpr int kMaxIsolationLevels = 6;
 
+// The largest finite sharpness isolated: a semi-sharp feature decays one
+// level at a time, and its faces become patches a level after it has.
+constexpr double kMaxSemiSharpness = 4.0;
+
 // How far outside a ptex face a parameter may lie and still be taken (as
 // the nearest point of the face).
 constexpr double kDomainSlack = 1e-12;
@@ -160,8 +164,17 @@ class LimitEvaluator::Builder {
     const Index v = t.corner_vertex(corner);
     if (t.vertex_kind(v) == VertexKind::interior && is_smooth_vertex(level, v))
       return std::pair{Configuration{Configuration::Kind::interior, static_cast<int>(t.valence(v))}, 0};
-    const VertexRule rule = creasing(level).vertex_rule[static_cast<std::size_t>(v)];
-    if (rule != VertexRule::crease && rule != VertexRule::corner) return std::nullopt;
+    // Sharp features that keep their rules: semi-sharp ones are isolated
+    // further, until they have decayed.
+    const LevelCreasing& c = creasing(level);
+    const VertexRule rule = c.vertex_rule[static_cast<std::size_t>(v)];
+    if ((rule != VertexRule::crease && rule != VertexRule::corner) ||
+        rule != c.child_vertex_rule[static_cast<std::size_t>(v)])
+      return std::nullopt;
+    for (const Index e : t.vertex_edges(v)) {
+      const double sharpness = edge_sharpness_of(c, e);
+      if (sharpness > 0.0 && sharpness < kInfiniteSharpness) return std::nullopt;
+    }
     const auto sector = sector_faces(level, corner);
     if (!sector) return std::nullopt;
     const auto position = static_cast<int>(std::find(sector->begin(), sector->end(), corner) - sector->begin());
@@ -337,31 +350,40 @@ namespace {
 
 // Catmull-Clark's sharp features: infinitely sharp edges (boundaries,
 // creases) and corners split the faces around a vertex into sectors, each
-// evaluated by its own patches; semi-sharp features and darts are not.
+// evaluated by its own patches; semi-sharp ones are isolated until they
+// have decayed (up to kMaxSemiSharpness). Darts are not covered.
 void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const RefineOptions& options) {
   const LevelCreasing c = compute_creasing(mesh, t, boundary_of(mesh, options), crease_method_of(mesh, options));
+  const auto semi_sharp_refusal = [](const std::string& what, double s) {
+    return InvalidInputError("limit evaluation: " + what + " has sharpness " + std::to_string(s) +
+                             "; exact evaluation isolates semi-sharp features up to sharpness " +
+                             std::to_string(static_cast<int>(kMaxSemiSharpness)));
+  };
   for (Index e = 0; e < t.edge_count(); ++e) {
     const double s = edge_sharpness_of(c, e);
-    if (s > 0.0 && s < kInfiniteSharpness) {
+    if (s > kMaxSemiSharpness && s < kInfiniteSharpness) {
       const auto [a, b] = t.edge_vertices(e);
-      throw InvalidInputError("limit evaluation: edge " + std::to_string(a) + "-" + std::to_string(b) + " has sharpness " +
-                              std::to_string(s) + "; exact evaluation covers smooth and infinitely sharp edges so far");
+      throw semi_sharp_refusal("edge " + std::to_string(a) + "-" + std::to_string(b), s);
     }
   }
+  for (const CornerTag& corner : mesh.tags.corners)
+    if (corner.sharpness > kMaxSemiSharpness && corner.sharpness < kInfiniteSharpness)
+      throw semi_sharp_refusal("the corner tag of vertex " + std::to_string(corner.vertex), corner.sharpness);
+  // What stays once semi-sharp features have decayed: the infinitely sharp
+  // edges and corner tags.
+  std::vector<char> sharp_corner(static_cast<std::size_t>(t.vertex_count()), 0);
+  for (const CornerTag& corner : mesh.tags.corners)
+    if (corner.sharpness >= kInfiniteSharpness && corner.vertex >= 0 && corner.vertex < t.vertex_count())
+      sharp_corner[static_cast<std::size_t>(corner.vertex)] = 1;
   for (Index v = 0; v < t.vertex_count(); ++v) {
-    const auto i = static_cast<std::size_t>(v);
+    int sharp = 0;
+    for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) >= kInfiniteSharpness ? 1 : 0;
     const std::string vertex = "limit evaluation: vertex " + std::to_string(v);
-    if (c.vertex_rule[i] != c.child_vertex_rule[i])
-      throw InvalidInputError(vertex + " has a semi-sharp corner tag; exact evaluation covers infinitely sharp ones");
-    if (c.vertex_rule[i] == VertexRule::dart)
+    if (sharp == 1 && !sharp_corner[static_cast<std::size_t>(v)])
       throw InvalidInputError(vertex + " ends a crease (a dart); exact evaluation covers creases that run through");
-    if (c.vertex_rule[i] == VertexRule::corner) {
-      int sharp = 0;
-      for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) > 0.0 ? 1 : 0;
-      if (sharp < 2)
-        throw InvalidInputError(vertex + " is a corner where " + std::to_string(sharp) +
-                                " sharp edges meet; exact evaluation covers corners between two or more sharp edges");
-    }
+    if (sharp < 2 && sharp_corner[static_cast<std::size_t>(v)])
+      throw InvalidInputError(vertex + " is a corner where " + std::to_string(sharp) +
+                              " sharp edges meet; exact evaluation covers corners between two or more sharp edges");
   }
 }
 

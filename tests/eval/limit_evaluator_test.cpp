@@ -259,6 +259,22 @@ TEST(LimitEvaluator, NormalsAtCornersAreTheLimitsFromInsideTheFace) {
   }
 }
 
+// Semi-sharp creases and corners: isolated until they have decayed.
+TEST(LimitEvaluator, SemiSharpFeaturesEqualTheLimitsAtDyadicPoints) {
+  for (const double sharpness : {0.5, 1.0, 2.5, 4.0}) {  // 4: the most isolated
+    PolygonMesh mesh = test::jittered(test::creased_cube(), 31);
+    for (CreaseTag& c : mesh.tags.creases) c.sharpness = sharpness;
+    mesh.tags.corners = {CornerTag{0, sharpness, CornerType::unspecified, std::nullopt}};
+    SCOPED_TRACE("sharpness " + std::to_string(sharpness));
+    expect_equals_limits_at_dyadic_points(mesh, "catmull-clark", 5);
+  }
+  PolygonMesh chaikin = test::jittered(test::creased_cube(), 32);
+  for (std::size_t i = 0; i < chaikin.tags.creases.size(); ++i) chaikin.tags.creases[i].sharpness = 0.5 + 0.25 * (i % 7);
+  chaikin.tags.crease_method = CreaseMethod::chaikin;
+  chaikin.tags.crease_method_set = true;
+  expect_equals_limits_at_dyadic_points(chaikin, "catmull-clark", 5);
+}
+
 TEST(LimitEvaluator, BoundariesCreasesAndCornersEqualTheLimitsAtDyadicPoints) {
   // Boundary vertices of two faces, corners of one (the corner rule).
   expect_equals_limits_at_dyadic_points(test::jittered(test::quad_grid(4, 3), 5), "catmull-clark", 3);
@@ -435,8 +451,8 @@ TEST(LimitEvaluator, RefusesWhatItDoesNotCover) {
   tagged_triangles.tags.creases = {{0, 1, kInfiniteSharpness}};
   refused(tagged_triangles, "loop", "crease or corner tags");
   PolygonMesh tagged = test::creased_cube();
-  tagged.tags.creases.back().sharpness = 2.5;
-  refused(tagged, "catmull-clark", "has sharpness 2.5");
+  tagged.tags.creases.back().sharpness = 4.5;
+  refused(tagged, "catmull-clark", "has sharpness 4.5");
   tagged.tags.creases = {tagged.tags.creases.front()};
   tagged.tags.creases.front().sharpness = kInfiniteSharpness;
   refused(tagged, "catmull-clark", "(a dart)");
