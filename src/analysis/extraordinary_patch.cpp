@@ -152,8 +152,6 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
   const int valence = configuration.k;
   if (interior && valence < 3)
     throw InvalidInputError("extraordinary patch: valence " + std::to_string(valence) + " is below 3");
-  if (!interior && split != SplitRule::quad)
-    throw InvalidInputError("extraordinary patch: " + configuration.name() + " is built for the quad split only");
   if (!interior && (valence < 1 || position < 0 || position >= valence))
     throw InvalidInputError("extraordinary patch: " + configuration.name() + " has no face " + std::to_string(position));
   const bool quads = split == SplitRule::quad;
@@ -238,32 +236,42 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
   A_ = rows_over_ring(table, plain_rows(child_ring->vertices), column_of, size, valence_);
   // A regular piece: the patch points at `origin` of `mesh`, as rows of
   // `stencils` over the ring.
-  const auto piece = [&](const MeshTopology& mesh, const StencilTable& stencils, Index origin, const ChildFrame& frame) {
+  // (false where the child is no regular patch, if `may_fail`).
+  const auto piece = [&](const MeshTopology& mesh, const LevelCreasing& creasing, const StencilTable& stencils,
+                         Index origin, const ChildFrame& frame, bool may_fail = false) {
     std::vector<PatchStencil> rows;
     if (quads) {
-      const auto points = bicubic_patch_stencils(mesh, child_creasing, origin);
+      const auto points = bicubic_patch_stencils(mesh, creasing, origin);
       if (points) rows.assign(points->begin(), points->end());
     } else {
-      const auto points = box_spline_patch_points(mesh, origin);
-      if (points) rows = plain_rows(*points);
+      const auto points = box_spline_patch_stencils(mesh, creasing, origin);
+      if (points) rows.assign(points->begin(), points->end());
     }
-    if (rows.empty()) inconsistent(valence_, "a regular piece has no regular patch");
+    if (rows.empty()) {
+      if (may_fail) return false;
+      inconsistent(valence_, "a regular piece has no regular patch");
+    }
     children_.push_back({rows_over_ring(stencils, rows, column_of, size, valence_), frame.origin, frame.axis});
+    return true;
   };
   const auto& frames = quads ? kQuadChildren : kTriangleChildren;
-  const bool middle_split = !quads && interior && valence == 3;
-  for (std::size_t k = 0; k < (middle_split ? 2 : 3); ++k)
-    piece(child, table, corner_at(child, parameter, children_of_F, frames[k]), frames[k]);
+  for (std::size_t k = 0; k < 2; ++k)
+    piece(child, child_creasing, table, corner_at(child, parameter, children_of_F, frames[k]), frames[k]);
+  const bool middle_split =
+      !piece(child, child_creasing, table, corner_at(child, parameter, children_of_F, frames[2]), frames[2], !quads);
   if (middle_split) {
-    // Loop at valence 3: the triangles around the middle child's corners
-    // wrap around the corner (its patch points are not distinct), so its
-    // four children, one level further down, are the pieces instead.
+    // The triangle split's middle child is no regular patch at Loop's
+    // valence 3 (the triangles around its corners wrap around the corner:
+    // its patch points are not distinct) and in a sector of one face (it
+    // touches both sharp edges): its four children, one level further
+    // down, are the pieces instead.
     RefineOptions two_steps = one_step;
     two_steps.levels = 2;
     const StencilTable table2 = refine_stencil_table(model.mesh, loop_scheme(), two_steps);
     PolygonMesh grandchild_mesh;
     const SplitMap map2 = split_topology(child_mesh, child, split, grandchild_mesh);
     const MeshTopology grandchild(grandchild_mesh);
+    const LevelCreasing grandchild_creasing = creasing_of(grandchild_mesh, grandchild);
     // Level-2 parameters: vertex points keep theirs, edge points of edges
     // inside F take their ends' midpoint.
     std::vector<std::array<double, 2>> parameter2(static_cast<std::size_t>(grandchild.vertex_count()), {-1.0, -1.0});
@@ -283,7 +291,8 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
     for (const ChildFrame& sub : kSubFrames) {
       const ChildFrame frame{{middle.origin[0] + sub.origin[0] * middle.axis[0], middle.origin[1] + sub.origin[1] * middle.axis[1]},
                              {sub.axis[0] * middle.axis[0], sub.axis[1] * middle.axis[1]}};
-      piece(grandchild, table2, corner_at(grandchild, parameter2, child_faces(child, split, middle_face), frame), frame);
+      piece(grandchild, grandchild_creasing, table2,
+            corner_at(grandchild, parameter2, child_faces(child, split, middle_face), frame), frame);
     }
   }
   Eigen::MatrixXd power = Eigen::MatrixXd::Identity(size, size);  // A^n

@@ -191,6 +191,161 @@ std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTop
   return out;
 }
 
+/// The faces of the sector between sharp edges around corner c's vertex that
+/// holds c's face, all triangles: -1 where a face is not a triangle or the
+/// sector is no sector (a closed fan without sharp edges).
+int triangle_sector_size(const MeshTopology& topology, const LevelCreasing& creasing, Index c) {
+  const Index v = topology.corner_vertex(c);
+  const auto stops = [&](Index k) {
+    return topology.corner_across(k) == kInvalidIndex || edge_sharpness_of(creasing, topology.corner_edge(k)) > 0.0;
+  };
+  const Index limit = topology.vertex_face_count(v);
+  Index around = c;
+  for (Index steps = 0; !stops(around); around = topology.corner_next(topology.corner_across(around)))
+    if (++steps > limit) return -1;
+  int faces = 1;
+  while (!stops(topology.corner_prev(around))) {
+    if (topology.face_size(topology.corner_face(around)) != 3) return -1;
+    around = topology.corner_across(topology.corner_prev(around));
+    if (++faces > limit) return -1;
+  }
+  return topology.face_size(topology.corner_face(around)) == 3 ? faces : -1;
+}
+
+bool is_regular_box_spline_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index corner) {
+  const Index v = topology.corner_vertex(corner);
+  const VertexRule rule = creasing.vertex_rule[static_cast<std::size_t>(v)];
+  if (topology.face_size(topology.corner_face(corner)) != 3 || rule != creasing.child_vertex_rule[static_cast<std::size_t>(v)])
+    return false;
+  for (const Index e : topology.vertex_edges(v)) {
+    const double s = edge_sharpness_of(creasing, e);
+    if (s > 0.0 && s < kInfiniteSharpness) return false;
+  }
+  if (rule == VertexRule::smooth) {
+    if (!is_regular_interior(topology, v, 6)) return false;
+    for (const Index c : topology.vertex_corners(v))
+      if (topology.face_size(topology.corner_face(c)) != 3) return false;
+    return true;
+  }
+  // On a straight crease or a boundary: three triangles on the face's side.
+  return rule == VertexRule::crease && triangle_sector_size(topology, creasing, corner) == 3;
+}
+
+std::optional<std::array<PatchStencil, 12>> box_spline_patch_stencils(const MeshTopology& topology,
+                                                                     const LevelCreasing& creasing, Index corner) {
+  if (topology.face_size(topology.corner_face(corner)) != 3) return std::nullopt;
+  constexpr std::array<std::array<int, 2>, 3> kOrigin = {{{0, 0}, {1, 0}, {0, 1}}};
+  // A corner's six neighbours counter-clockwise from v, in its frame.
+  constexpr std::array<std::array<int, 2>, 6> kFan = {{{0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}, {1, 0}}};
+  std::array<Index, 12> points{};
+  points.fill(kInvalidIndex);
+  const auto place = [&](std::array<int, 2> at, Index vertex) {
+    const int k = lattice_index(at[0], at[1]);
+    if (k < 0) return true;  // beyond the 12
+    Index& slot = points[static_cast<std::size_t>(k)];
+    if (slot != kInvalidIndex && slot != vertex) return false;
+    slot = vertex;
+    return true;
+  };
+  const auto stops = [&](Index c) {
+    return topology.corner_across(c) == kInvalidIndex || edge_sharpness_of(creasing, topology.corner_edge(c)) > 0.0;
+  };
+  // The crease line through a corner on one: its point o, its direction d,
+  // and w, the lattice direction 60 degrees from d into the face's side.
+  struct Line {
+    std::array<int, 2> o, d, w;
+  };
+  std::optional<Line> line;
+  Index c = corner;
+  for (std::size_t k = 0; k < 3; ++k, c = topology.corner_next(c)) {
+    if (!is_regular_box_spline_corner(topology, creasing, c)) return std::nullopt;
+    const Index v = topology.corner_vertex(c);
+    const auto [ox, oy] = kOrigin[k];
+    const auto [nx, ny] = kOrigin[(k + 1) % 3];
+    const auto [px, py] = kOrigin[(k + 2) % 3];
+    const int ux = nx - ox, uy = ny - oy, vx = px - ox, vy = py - oy;
+    const auto direction = [&](std::size_t i) {
+      return std::array<int, 2>{kFan[i][0] * ux + kFan[i][1] * vx, kFan[i][0] * uy + kFan[i][1] * vy};
+    };
+    const auto at = [&](std::size_t i) {
+      const auto d = direction(i);
+      return std::array<int, 2>{ox + d[0], oy + d[1]};
+    };
+    if (!place({ox, oy}, v)) return std::nullopt;
+    // Counter-clockwise from the face (fan positions 0, 1, ...), across the
+    // edge entering v, up to a sharp edge; then clockwise from the face
+    // (positions 5, 4, ...) across the edge leaving v.
+    std::size_t ccw = 0;
+    Index around = c;
+    bool closed = false;  // back at the face: a smooth vertex's whole fan
+    while (true) {
+      if (!place(at(ccw), topology.corner_vertex(topology.corner_prev(around)))) return std::nullopt;
+      if (stops(topology.corner_prev(around))) break;
+      around = topology.corner_across(topology.corner_prev(around));
+      closed = around == c;
+      if (closed || ++ccw >= 6) break;
+    }
+    if (closed) continue;
+    if (ccw >= 6) return std::nullopt;
+    std::size_t cw = 5;
+    around = c;
+    if (!place(at(cw), topology.corner_vertex(topology.corner_next(c)))) return std::nullopt;
+    while (!stops(around)) {
+      around = topology.corner_next(topology.corner_across(around));
+      if (--cw <= ccw) return std::nullopt;
+      if (!place(at(cw), topology.corner_vertex(topology.corner_next(around)))) return std::nullopt;
+    }
+    // The sharp edges run to fan positions cw and ccw (opposite: three
+    // triangles between); the face's side runs counter-clockwise from cw.
+    const Line here{{ox, oy}, direction(cw), direction((cw + 1) % 6)};
+    if (line) {
+      // One crease line per patch: another corner on it, along it.
+      const int ax = here.o[0] - line->o[0], ay = here.o[1] - line->o[1];
+      if (ax * line->d[1] - ay * line->d[0] != 0 || here.d[0] * line->d[1] - here.d[1] * line->d[0] != 0)
+        return std::nullopt;
+    } else {
+      line = here;
+    }
+  }
+  std::array<PatchStencil, 12> out;
+  for (std::size_t i = 0; i < 12; ++i)
+    if (points[i] != kInvalidIndex) out[i] = vertex_stencil(points[i]);
+  // Beyond the crease line, one row: x = o + a d - w is the parallelogram
+  // reflection p(m1) + p(m2) - p(R x) of R x = o + (a - 1) d + w, with m1 =
+  // o + a d and m2 = o + (a - 1) d on the line.
+  for (std::size_t i = 0; i < 12; ++i) {
+    if (points[i] != kInvalidIndex) continue;
+    if (!line) return std::nullopt;
+    // x - o = a d + b w, solved in the lattice (d and w a basis, det +-1).
+    const int xx = kBoxSplineLattice[i][0] - line->o[0], xy = kBoxSplineLattice[i][1] - line->o[1];
+    const int det = line->d[0] * line->w[1] - line->d[1] * line->w[0];
+    const int a = (xx * line->w[1] - xy * line->w[0]) / det, b = (line->d[0] * xy - line->d[1] * xx) / det;
+    if (b != -1) return std::nullopt;
+    const auto point_at = [&](int pa, int pb) {
+      return lattice_index(line->o[0] + pa * line->d[0] + pb * line->w[0], line->o[1] + pa * line->d[1] + pb * line->w[1]);
+    };
+    const int mirror = point_at(a - 1, 1), m1 = point_at(a, 0), m2 = point_at(a - 1, 0);
+    if (mirror < 0 || m1 < 0 || m2 < 0) return std::nullopt;
+    const Index pm = points[static_cast<std::size_t>(mirror)], p1 = points[static_cast<std::size_t>(m1)],
+                p2 = points[static_cast<std::size_t>(m2)];
+    if (pm == kInvalidIndex || p1 == kInvalidIndex || p2 == kInvalidIndex) return std::nullopt;
+    PatchStencil p;
+    p.vertex = {p1, p2, pm, 0};
+    p.weight = {1.0, 1.0, -1.0, 0.0};
+    p.size = 3;
+    out[i] = p;
+  }
+  std::array<Index, 12> real{};
+  std::size_t reals = 0;
+  for (std::size_t i = 0; i < 12; ++i)
+    if (points[i] != kInvalidIndex) real[reals++] = points[i];
+  std::sort(real.begin(), real.begin() + static_cast<std::ptrdiff_t>(reals));
+  if (std::adjacent_find(real.begin(), real.begin() + static_cast<std::ptrdiff_t>(reals)) !=
+      real.begin() + static_cast<std::ptrdiff_t>(reals))
+    return std::nullopt;
+  return out;
+}
+
 std::optional<std::array<Index, 16>> bicubic_patch_points(const MeshTopology& topology, Index corner) {
   const Index face = topology.corner_face(corner);
   if (topology.face_size(face) != 4) return std::nullopt;

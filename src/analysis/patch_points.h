@@ -66,6 +66,34 @@ std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTop
 /// \pre \p corner is in [0, topology.corner_count()) (unchecked).
 bool is_regular_patch_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index corner);
 
+/// Whether the vertex at `corner` is one of box_spline_patch_stencils'
+/// corner kinds for the triangle holding `corner`.
+/// \param topology the level's topology.
+/// \param creasing the level's creasing.
+/// \param corner a corner of a triangle.
+/// \return whether it is.
+/// \pre \p corner is in [0, topology.corner_count()) (unchecked).
+bool is_regular_box_spline_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index corner);
+
+/// The box-spline patch of the triangle that holds `corner` next to a
+/// sharp edge (a boundary, an infinitely sharp crease): beyond the crease
+/// line each lattice point x is the parallelogram reflection p(m1) + p(m2)
+/// - p(R x) of its mirror image across the line (m1, m2 the two points of
+/// the line beside it), which reproduces Loop's crease rule (1/8, 3/4,
+/// 1/8) and its edge midpoints there. Each corner must be a smooth interior
+/// vertex of six triangles, or a vertex with the crease rule whose sector
+/// holding the face has three triangles (a straight crease, or a boundary
+/// vertex of three faces), the face anywhere in it; the crease corners on
+/// one crease line. Corners (the corner rule) are no such patch.
+/// \param topology the level's topology.
+/// \param creasing the level's creasing.
+/// \param corner a corner of a triangle, at lattice point (0, 0).
+/// \return the 12 points in the order of kBoxSplineLattice; empty where the
+///   face is no such patch. Without sharp edges, box_spline_patch_points.
+/// \pre \p corner is in [0, topology.corner_count()) (unchecked).
+std::optional<std::array<PatchStencil, 12>> box_spline_patch_stencils(const MeshTopology& topology,
+                                                                     const LevelCreasing& creasing, Index corner);
+
 /// The box-spline patch of the triangle that holds `corner`, with that
 /// corner at lattice point (0, 0), the next corner of its face at (1, 0) and
 /// the previous one at (0, 1).

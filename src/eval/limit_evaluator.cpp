@@ -125,18 +125,6 @@ class LimitEvaluator::Builder {
     return *slot;
   }
 
-  // An interior vertex of the regular valence, its faces of the regular
-  // size, no sharp edge and the smooth rule.
-  bool is_regular_vertex(int level, Index v) {
-    const MeshTopology& t = topology(level);
-    const Index regular = out_.triangles_ ? 6 : 4;
-    if (t.vertex_kind(v) != VertexKind::interior || t.valence(v) != regular || t.vertex_face_count(v) != regular)
-      return false;
-    for (const Index c : t.vertex_corners(v))
-      if (t.face_size(t.corner_face(c)) != (out_.triangles_ ? 3 : 4)) return false;
-    return is_smooth_vertex(level, v);
-  }
-
   // The smooth rule and no sharp edge around v.
   bool is_smooth_vertex(int level, Index v) {
     const LevelCreasing& c = creasing(level);
@@ -218,16 +206,16 @@ class LimitEvaluator::Builder {
     if (t.face_size(face) == size) {
       const Index first = t.face_first_corner(face);
       if (out_.triangles_) {
-        if (const auto points = box_spline_patch_points(t, first); points && all_regular(level, first))
-          return add_leaf(level, frame, nullptr, *points);
+        if (const auto stencils = box_spline_patch_stencils(t, creasing(level), first))
+          return add_leaf(level, frame, nullptr, control_points(level, std::span<const PatchStencil>(*stencils)));
       } else if (const auto stencils = bicubic_patch_stencils(t, creasing(level), first)) {
-        return add_leaf(level, frame, nullptr, control_points(level, *stencils));
+        return add_leaf(level, frame, nullptr, control_points(level, std::span<const PatchStencil>(*stencils)));
       }
       // One extraordinary corner, the others regular: its model's patch.
       int irregular = 0;
       Index corner = first;
       for (Index k = 0; k < size; ++k) {
-        const bool regular = out_.triangles_ ? is_regular_vertex(level, t.corner_vertex(first + k))
+        const bool regular = out_.triangles_ ? is_regular_box_spline_corner(t, creasing(level), first + k)
                                              : is_regular_patch_corner(t, creasing(level), first + k);
         if (!regular) {
           ++irregular;
@@ -251,17 +239,9 @@ class LimitEvaluator::Builder {
     }
   }
 
-  // Whether the corners of the face at `first` are all regular vertices.
-  bool all_regular(int level, Index first) {
-    const MeshTopology& t = topology(level);
-    for (Index k = 0; k < t.face_size(t.corner_face(first)); ++k)
-      if (!is_regular_vertex(level, t.corner_vertex(first + k))) return false;
-    return true;
-  }
-
   // The patch's control points: its vertices (level-local indices), and
   // each phantom point as a new point (-1 - its number, see build()).
-  std::vector<Index> control_points(int level, const std::array<PatchStencil, 16>& stencils) {
+  std::vector<Index> control_points(int level, std::span<const PatchStencil> stencils) {
     const std::vector<Vec3>& positions = hierarchy_.levels[static_cast<std::size_t>(level)].mesh.positions;
     std::vector<Index> points;
     points.reserve(stencils.size());
@@ -348,7 +328,7 @@ class LimitEvaluator::Builder {
 
 namespace {
 
-// Catmull-Clark's sharp features: infinitely sharp edges (boundaries,
+// Sharp features: infinitely sharp edges (boundaries,
 // creases) and corners split the faces around a vertex into sectors, each
 // evaluated by its own patches; semi-sharp ones are isolated until they
 // have decayed (up to kMaxSemiSharpness). Darts are not covered.
@@ -398,15 +378,9 @@ void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOpti
   check_refinable(mesh, scheme, options);
   if (!mesh.tags.holes.empty())
     throw InvalidInputError("limit evaluation: the mesh has hole tags, which exact evaluation does not cover yet");
-  if (name == loop && (!mesh.tags.creases.empty() || !mesh.tags.corners.empty()))
-    throw InvalidInputError("limit evaluation: the mesh has crease or corner tags; " + loop +
-                            "'s exact evaluation covers untagged closed meshes so far");
   const MeshTopology t(mesh);
   for (Index v = 0; v < t.vertex_count(); ++v) {
     const VertexKind kind = t.vertex_kind(v);
-    if (kind == VertexKind::boundary && name == loop)
-      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is on a boundary; " + loop +
-                              "'s exact evaluation covers closed meshes so far");
     if (kind != VertexKind::interior && kind != VertexKind::boundary)
       throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is " +
                               (kind == VertexKind::isolated ? "used by no face" : "non-manifold"));
@@ -415,7 +389,7 @@ void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOpti
                               std::to_string(t.valence(v)) + "; exact evaluation covers interior vertices of valence 3 "
                               "and more");
   }
-  if (name == catmull_clark) check_sharp_features(mesh, t, options);
+  check_sharp_features(mesh, t, options);
 }
 
 }  // namespace

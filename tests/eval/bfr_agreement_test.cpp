@@ -129,9 +129,14 @@ Differences differences(const PolygonMesh& mesh, const char* name, Sdc::SchemeTy
   Differences d;
   const MeshTopology t(mesh);
   for (Index f = 0; f < mesh.face_count(); ++f) {
+    // Boundary vertices are regular with two faces (or a quad corner's one),
+    // three for triangles.
     bool irregular = false;
-    for (const Index v : t.face_vertices(f))
-      irregular |= t.vertex_kind(v) == VertexKind::interior && t.valence(v) != (triangles ? 6 : 4);
+    for (const Index v : t.face_vertices(f)) {
+      const Index faces = t.vertex_face_count(v);
+      irregular |= t.vertex_kind(v) == VertexKind::interior ? t.valence(v) != (triangles ? 6 : 4)
+                                                            : faces != (triangles ? 3 : 2) && (triangles || faces != 1);
+    }
     if ((which == Faces::irregular && !irregular) || (which == Faces::regular && irregular)) continue;
     for (int k = 0; k < 12; ++k) {
       double u = unit(random), v = unit(random);
@@ -161,8 +166,8 @@ TEST(BfrAgreement, RegularFacesAreTheSamePatches) {
 }
 
 // Boundaries, corners and infinitely sharp creases: both evaluate the
-// reflected bicubic patches (Bfr's regular boundary patches) away from
-// extraordinary vertices.
+// reflected bicubic and box-spline patches (Bfr's regular boundary
+// patches) away from extraordinary vertices.
 TEST(BfrAgreement, BoundaryCreaseAndCornerFacesAreTheSamePatches) {
   // The creased cube split once more, so that faces along the creases have
   // no corner of valence 3.

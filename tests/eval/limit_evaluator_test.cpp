@@ -259,6 +259,34 @@ TEST(LimitEvaluator, NormalsAtCornersAreTheLimitsFromInsideTheFace) {
   }
 }
 
+// Each quad split into two triangles along the diagonal from its first
+// corner.
+PolygonMesh triangulated(const PolygonMesh& quads) {
+  PolygonMesh mesh;
+  mesh.positions = quads.positions;
+  mesh.tags = quads.tags;
+  for (Index f = 0; f < quads.face_count(); ++f) {
+    const auto v = quads.face(f);
+    mesh.add_face({v[0], v[1], v[2]});
+    mesh.add_face({v[0], v[2], v[3]});
+  }
+  return mesh;
+}
+
+// Loop at boundaries, creases and corners: regular boundary patches
+// (parallelogram reflections) and sector models.
+TEST(LimitEvaluator, LoopBoundariesCreasesAndCornersEqualTheLimitsAtDyadicPoints) {
+  expect_equals_limits_at_dyadic_points(test::jittered(test::box_spline_grid(4, 3), 41), "loop", 4);
+  expect_equals_limits_at_dyadic_points(test::jittered(test::triangle_grid(3, 3), 42), "loop", 4);
+  expect_equals_limits_at_dyadic_points(test::jittered(triangulated(test::creased_cube()), 43), "loop", 4);
+  // A crease around one face of the tetrahedron: sectors of one and two faces.
+  PolygonMesh tetrahedron = test::tetrahedron();
+  const auto f = tetrahedron.face(0);
+  tetrahedron.tags.creases = {{f[0], f[1], kInfiniteSharpness}, {f[1], f[2], kInfiniteSharpness},
+                              {f[2], f[0], kInfiniteSharpness}};
+  expect_equals_limits_at_dyadic_points(tetrahedron, "loop", 4);
+}
+
 // Semi-sharp creases and corners: isolated until they have decayed.
 TEST(LimitEvaluator, SemiSharpFeaturesEqualTheLimitsAtDyadicPoints) {
   for (const double sharpness : {0.5, 1.0, 2.5, 4.0}) {  // 4: the most isolated
@@ -273,6 +301,9 @@ TEST(LimitEvaluator, SemiSharpFeaturesEqualTheLimitsAtDyadicPoints) {
   chaikin.tags.crease_method = CreaseMethod::chaikin;
   chaikin.tags.crease_method_set = true;
   expect_equals_limits_at_dyadic_points(chaikin, "catmull-clark", 5);
+  PolygonMesh triangles = test::jittered(triangulated(test::creased_cube()), 33);
+  for (CreaseTag& c : triangles.tags.creases) c.sharpness = 1.5;
+  expect_equals_limits_at_dyadic_points(triangles, "loop", 4);
 }
 
 TEST(LimitEvaluator, BoundariesCreasesAndCornersEqualTheLimitsAtDyadicPoints) {
@@ -445,11 +476,10 @@ TEST(LimitEvaluator, RefusesWhatItDoesNotCover) {
     const std::string m = message([&] { LimitEvaluator(mesh, scheme(name)); });
     EXPECT_NE(m.find(why), std::string::npos) << m << " (expected: " << why << ")";
   };
-  refused(test::triangle_grid(3, 3), "loop", "is on a boundary");
   refused(test::cube(), "doo-sabin", "has no exact evaluator");
   PolygonMesh tagged_triangles = test::tetrahedron();
   tagged_triangles.tags.creases = {{0, 1, kInfiniteSharpness}};
-  refused(tagged_triangles, "loop", "crease or corner tags");
+  refused(tagged_triangles, "loop", "vertex 0 ends a crease (a dart)");
   PolygonMesh tagged = test::creased_cube();
   tagged.tags.creases.back().sharpness = 4.5;
   refused(tagged, "catmull-clark", "has sharpness 4.5");
