@@ -381,9 +381,9 @@ void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOpti
   const MeshTopology t(mesh);
   for (Index v = 0; v < t.vertex_count(); ++v) {
     const VertexKind kind = t.vertex_kind(v);
-    if (kind != VertexKind::interior && kind != VertexKind::boundary)
-      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is " +
-                              (kind == VertexKind::isolated ? "used by no face" : "non-manifold"));
+    // (A vertex used by no face has no part in the surface.)
+    if (kind != VertexKind::interior && kind != VertexKind::boundary && kind != VertexKind::isolated)
+      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is non-manifold");
     if (kind == VertexKind::interior && t.valence(v) < 3)
       throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " has valence " +
                               std::to_string(t.valence(v)) + "; exact evaluation covers interior vertices of valence 3 "

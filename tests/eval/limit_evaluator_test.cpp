@@ -492,6 +492,10 @@ TEST(LimitEvaluator, RefusesWhatItDoesNotCover) {
   tagged.tags.corners.clear();
   tagged.tags.holes = {0};
   refused(tagged, "catmull-clark", "hole tags");
+  // A vertex used by no face has no part in the surface: accepted.
+  PolygonMesh stray = test::cube();
+  stray.positions.push_back({5, 5, 5});
+  EXPECT_NO_THROW(LimitEvaluator(stray, scheme("catmull-clark")));
   // Two quads glued along their four edges: vertices of valence 2.
   PolygonMesh pillow = test::quad_grid(1, 1);
   pillow.add_face({0, 2, 3, 1});
