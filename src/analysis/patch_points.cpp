@@ -260,10 +260,10 @@ std::optional<std::array<PatchStencil, 12>> box_spline_patch_stencils(const Mesh
   for (std::size_t k = 0; k < 3; ++k, c = topology.corner_next(c)) {
     if (!is_regular_box_spline_corner(topology, creasing, c)) return std::nullopt;
     const Index v = topology.corner_vertex(c);
-    const auto [ox, oy] = kOrigin[k];
-    const auto [nx, ny] = kOrigin[(k + 1) % 3];
-    const auto [px, py] = kOrigin[(k + 2) % 3];
-    const int ux = nx - ox, uy = ny - oy, vx = px - ox, vy = py - oy;
+    // Plain variables: clang 14 cannot capture structured bindings in a lambda.
+    const int ox = kOrigin[k][0], oy = kOrigin[k][1];
+    const int ux = kOrigin[(k + 1) % 3][0] - ox, uy = kOrigin[(k + 1) % 3][1] - oy;
+    const int vx = kOrigin[(k + 2) % 3][0] - ox, vy = kOrigin[(k + 2) % 3][1] - oy;
     const auto direction = [&](std::size_t i) {
       return std::array<int, 2>{kFan[i][0] * ux + kFan[i][1] * vx, kFan[i][0] * uy + kFan[i][1] * vy};
     };
