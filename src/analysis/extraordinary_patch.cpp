@@ -113,6 +113,41 @@ Eigen::MatrixXd rows_over_ring(const StencilTable& table, const std::vector<Patc
   return m;
 }
 
+/// A dart at the ring mesh's centre: an infinitely sharp crease from the
+/// centre along its first face's edge leaving it, straight on (through the
+/// opposite edge at each regular vertex) to the ring mesh's boundary.
+void add_dart(RingMesh& model, Index regular_valence) {
+  const MeshTopology t(model.mesh);
+  Index from = model.centre;
+  Index e = t.corner_edge(t.vertex_corners(model.centre)[0]);
+  while (true) {
+    const auto [a, b] = t.edge_vertices(e);
+    model.mesh.tags.creases.push_back({a, b, kInfiniteSharpness});
+    const Index to = a == from ? b : a;
+    const auto edges = t.vertex_edges(to);
+    if (t.vertex_kind(to) != VertexKind::interior || static_cast<Index>(edges.size()) != regular_valence) break;
+    const auto i = static_cast<std::size_t>(std::find(edges.begin(), edges.end(), e) - edges.begin());
+    e = edges[(i + edges.size() / 2) % edges.size()];
+    from = to;
+  }
+}
+
+/// The parent's infinitely sharp crease and corner tags on the child of a
+/// split: each crease on its edge's two children.
+void carry_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map, PolygonMesh& child) {
+  for (const CreaseTag& tag : parent.tags.creases) {
+    const Index e = topology.find_edge(tag.v0, tag.v1);
+    if (e == kInvalidIndex) continue;
+    child.tags.creases.push_back({map.vertex_point(tag.v0), map.edge_point(e), tag.sharpness});
+    child.tags.creases.push_back({map.edge_point(e), map.vertex_point(tag.v1), tag.sharpness});
+  }
+  for (const CornerTag& tag : parent.tags.corners) {
+    CornerTag child_tag = tag;
+    child_tag.vertex = map.vertex_point(tag.vertex);
+    child.tags.corners.push_back(child_tag);
+  }
+}
+
 /// Plain rows: each a vertex of weight 1.
 std::vector<PatchStencil> plain_rows(std::span<const Index> vertices) {
   std::vector<PatchStencil> rows(vertices.size());
@@ -143,8 +178,8 @@ constexpr std::array<ChildFrame, 3> kTriangleChildren = {{{{0.5, 0.0}, {0.5, 0.5
 ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence)
     : ExtraordinaryPatch(split, Configuration{Configuration::Kind::interior, valence}, 0) {}
 
-ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position)
-    : split_(split), valence_(configuration.k), configuration_(configuration), position_(position) {
+ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position, bool dart)
+    : split_(split), valence_(configuration.k), configuration_(configuration), position_(position), dart_(dart) {
   if (split != SplitRule::quad && split != SplitRule::triangle) {
     throw InvalidInputError("extraordinary patch: only the quad and triangle splits have one");
   }
@@ -152,13 +187,15 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
   const int valence = configuration.k;
   if (interior && valence < 3)
     throw InvalidInputError("extraordinary patch: valence " + std::to_string(valence) + " is below 3");
-  if (!interior && (valence < 1 || position < 0 || position >= valence))
+  if ((!interior || dart) && (valence < 1 || position < 0 || position >= valence))
     throw InvalidInputError("extraordinary patch: " + configuration.name() + " has no face " + std::to_string(position));
+  if (dart && !interior) throw InvalidInputError("extraordinary patch: a dart is an interior configuration");
   const bool quads = split == SplitRule::quad;
   // Four rings keep the ring mesh's own boundary away from every row read.
   // Its boundary edges are sharp, and a boundary centre keeps the crease
   // rule whatever its face count (edge_only), unless it is a corner.
-  const RingMesh model = ring_mesh(split, configuration, 4);
+  RingMesh model = ring_mesh(split, configuration, 4);
+  if (dart) add_dart(model, quads ? 4 : 6);
   const MeshTopology parent(model.mesh);
   const auto creasing_of = [](const PolygonMesh& mesh, const MeshTopology& topology) {
     return compute_creasing(mesh, topology, BoundaryInterpolation::edge_only, CreaseMethod::uniform);
@@ -167,14 +204,16 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
   // F: the face `position` steps counter-clockwise from the sector's first
   // (its edge leaving the centre is the boundary); any face of an interior
   // vertex.
+  // (A dart's crease leaves the centre along the first face's edge.)
   Index corner = parent.vertex_corners(model.centre)[0];
-  if (!interior) {
-    for (const Index c : parent.vertex_corners(model.centre))
-      if (parent.corner_across(c) == kInvalidIndex) corner = c;
+  if (!interior || dart) {
+    if (!interior)
+      for (const Index c : parent.vertex_corners(model.centre))
+        if (parent.corner_across(c) == kInvalidIndex) corner = c;
     for (int i = 0; i < position; ++i) corner = parent.corner_across(parent.corner_prev(corner));
   }
   const std::optional<FaceRing> ring = face_ring(parent, corner, &parent_creasing);
-  if (!ring || (interior && ring->vertices.size() != static_cast<std::size_t>(quads ? 2 * valence + 8 : valence + 6))) {
+  if (!ring || (interior && !dart && ring->vertices.size() != static_cast<std::size_t>(quads ? 2 * valence + 8 : valence + 6))) {
     inconsistent(valence, "the model face's ring has another size than 2N + 8 (quads) or N + 6 (triangles)");
   }
   signature_ = ring->signature;
@@ -190,12 +229,7 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
   const StencilTable table = refine_stencil_table(model.mesh, quads ? catmull_clark_scheme() : loop_scheme(), one_step);
   PolygonMesh child_mesh;
   const SplitMap map = split_topology(model.mesh, parent, split, child_mesh);
-  // The corner tag carries to the child centre (infinitely sharp).
-  for (const CornerTag& tag : model.mesh.tags.corners) {
-    CornerTag child_tag = tag;
-    child_tag.vertex = map.vertex_point(tag.vertex);
-    child_mesh.tags.corners.push_back(child_tag);
-  }
+  carry_tags(model.mesh, parent, map, child_mesh);
   const MeshTopology child(child_mesh);
   const LevelCreasing child_creasing = creasing_of(child_mesh, child);
 
@@ -270,6 +304,7 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
     const StencilTable table2 = refine_stencil_table(model.mesh, loop_scheme(), two_steps);
     PolygonMesh grandchild_mesh;
     const SplitMap map2 = split_topology(child_mesh, child, split, grandchild_mesh);
+    carry_tags(child_mesh, child, map2, grandchild_mesh);
     const MeshTopology grandchild(grandchild_mesh);
     const LevelCreasing grandchild_creasing = creasing_of(grandchild_mesh, grandchild);
     // Level-2 parameters: vertex points keep theirs, edge points of edges

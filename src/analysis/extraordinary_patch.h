@@ -95,11 +95,14 @@ class ExtraordinaryPatch {
   /// sector's first sharp edge: the quad split only. The sector's sharp
   /// edges keep the crease rule at the centre (a boundary of any face count,
   /// or one side of a crease) or its corner rule (a corner). An interior
-  /// configuration is the (split, valence) model.
-  /// \throws InvalidInputError for a position outside [0, k), a sector of
-  ///   the triangle split, or as the other constructor.
+  /// configuration is the (split, valence) model, or with `dart` the model
+  /// of a dart: an infinitely sharp crease ending at the centre, F
+  /// `position` faces counter-clockwise from the face whose edge leaving
+  /// the centre is the crease.
+  /// \throws InvalidInputError for a position outside [0, k), a dart that
+  ///   is not interior, or as the other constructor.
   /// \throws std::logic_error as the other constructor.
-  ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position);
+  ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position, bool dart = false);
 
   /// \return the split (quad: Catmull-Clark, triangle: Loop).
   SplitRule split() const noexcept { return split_; }
@@ -107,8 +110,11 @@ class ExtraordinaryPatch {
   int valence() const noexcept { return valence_; }
   /// \return the configuration at the corner.
   const Configuration& configuration() const noexcept { return configuration_; }
-  /// \return F's place in a boundary or corner sector (0 for interior).
+  /// \return F's place in a boundary or corner sector, or from a dart's
+  ///   crease (0 for interior).
   int position() const noexcept { return position_; }
+  /// \return whether the model is a dart's.
+  bool dart() const noexcept { return dart_; }
   /// \return the face-ring size: 2N + 8 (quad split), N + 6 (triangle split)
   ///   for an interior corner; a sector's own walk's size otherwise.
   int size() const noexcept { return static_cast<int>(A_.rows()); }
@@ -177,6 +183,7 @@ class ExtraordinaryPatch {
   int valence_ = 0;
   Configuration configuration_;
   int position_ = 0;
+  bool dart_ = false;
   Eigen::MatrixXd A_;              // K x K
   // The regular pieces of F outside its centre child: its other three
   // children, except Loop at valence 3, where the middle child's four

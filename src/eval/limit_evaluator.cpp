@@ -134,31 +134,38 @@ class LimitEvaluator::Builder {
     return true;
   }
 
-  const ExtraordinaryPatch& model(const Configuration& configuration, int position) {
-    auto& slot = out_.patches_[{static_cast<int>(configuration.kind), configuration.k, position}];
+  // An extraordinary corner's model.
+  struct Model {
+    Configuration configuration;
+    int position = 0;
+    bool dart = false;
+  };
+
+  // A model per configuration kind (darts apart), valence or face count,
+  // and place of the face.
+  const ExtraordinaryPatch& model(const Model& m) {
+    auto& slot = out_.patches_[{m.dart ? -1 : static_cast<int>(m.configuration.kind), m.configuration.k, m.position}];
     if (!slot)
-      slot = std::make_unique<ExtraordinaryPatch>(out_.triangles_ ? SplitRule::triangle : SplitRule::quad, configuration,
-                                                  position);
+      slot = std::make_unique<ExtraordinaryPatch>(out_.triangles_ ? SplitRule::triangle : SplitRule::quad,
+                                                  m.configuration, m.position, m.dart);
     return *slot;
   }
 
-  // The model configuration of the extraordinary corner `corner` (its
-  // vertex's and its face's place): a smooth interior vertex, or the sector
-  // between sharp edges (boundaries, infinitely sharp creases) that holds
-  // the face, at a vertex with the crease rule (a boundary sector's model)
-  // or the corner rule (a corner sector's); else none (a dart).
-  std::optional<std::pair<Configuration, int>> configuration_at(int level, Index corner) {
+  // The model of the extraordinary corner `corner` (its vertex's and its
+  // face's place): a smooth interior vertex; a dart (one infinitely sharp
+  // edge), the face counted from it; or the sector between sharp edges
+  // (boundaries, infinitely sharp creases) that holds the face, at a vertex
+  // with the crease rule (a boundary sector's model) or the corner rule (a
+  // corner sector's). None near semi-sharp features, which isolation
+  // resolves first.
+  std::optional<Model> model_at(int level, Index corner) {
     const MeshTopology& t = topology(level);
     const Index v = t.corner_vertex(corner);
     if (t.vertex_kind(v) == VertexKind::interior && is_smooth_vertex(level, v))
-      return std::pair{Configuration{Configuration::Kind::interior, static_cast<int>(t.valence(v))}, 0};
-    // Sharp features that keep their rules: semi-sharp ones are isolated
-    // further, until they have decayed.
+      return Model{Configuration{Configuration::Kind::interior, static_cast<int>(t.valence(v))}, 0, false};
     const LevelCreasing& c = creasing(level);
     const VertexRule rule = c.vertex_rule[static_cast<std::size_t>(v)];
-    if ((rule != VertexRule::crease && rule != VertexRule::corner) ||
-        rule != c.child_vertex_rule[static_cast<std::size_t>(v)])
-      return std::nullopt;
+    if (rule == VertexRule::smooth || rule != c.child_vertex_rule[static_cast<std::size_t>(v)]) return std::nullopt;
     for (const Index e : t.vertex_edges(v)) {
       const double sharpness = edge_sharpness_of(c, e);
       if (sharpness > 0.0 && sharpness < kInfiniteSharpness) return std::nullopt;
@@ -166,9 +173,13 @@ class LimitEvaluator::Builder {
     const auto sector = sector_faces(level, corner);
     if (!sector) return std::nullopt;
     const auto position = static_cast<int>(std::find(sector->begin(), sector->end(), corner) - sector->begin());
-    return std::pair{Configuration{rule == VertexRule::crease ? Configuration::Kind::boundary : Configuration::Kind::corner,
-                                   static_cast<int>(sector->size())},
-                     position};
+    if (rule == VertexRule::dart) {
+      if (t.vertex_kind(v) != VertexKind::interior) return std::nullopt;
+      return Model{Configuration{Configuration::Kind::interior, static_cast<int>(t.valence(v))}, position, true};
+    }
+    return Model{Configuration{rule == VertexRule::crease ? Configuration::Kind::boundary : Configuration::Kind::corner,
+                               static_cast<int>(sector->size())},
+                 position, false};
   }
 
   // The corners at `corner`'s vertex of the faces of its sector between
@@ -222,9 +233,9 @@ class LimitEvaluator::Builder {
           corner = first + k;
         }
       }
-      const auto configuration = irregular == 1 ? configuration_at(level, corner) : std::nullopt;
-      if (configuration) {
-        const ExtraordinaryPatch& patch = model(configuration->first, configuration->second);
+      const auto m = irregular == 1 ? model_at(level, corner) : std::nullopt;
+      if (m) {
+        const ExtraordinaryPatch& patch = model(*m);
         const auto ring = face_ring(t, corner, &creasing(level));
         if (ring && ring->signature == patch.signature())
           return add_leaf(level, detail::frame_at_corner(frame, static_cast<int>(corner - first), out_.triangles_),
@@ -260,16 +271,18 @@ class LimitEvaluator::Builder {
   }
 
   // The unit normal at an extraordinary corner, from the scheme's tangent
-  // masks. In a sector, the masks of the sector alone: its faces as a mesh
-  // of their own, the vertex on its boundary with its rule (the sector's
-  // side of a crease has its own normal).
+  // masks (a dart's are the smooth ones). In a sector, the masks of the
+  // sector alone: its faces as a mesh of their own, the vertex on its
+  // boundary with its rule (the sector's side of a crease has its own
+  // normal).
   Vec3 corner_normal(int level, Index corner) {
     const MeshTopology& t = topology(level);
     const PolygonMesh& mesh = hierarchy_.levels[static_cast<std::size_t>(level)].mesh;
     const Index vertex = t.corner_vertex(corner);
     std::optional<detail::VertexLimit> limit;
     LimitMasks scratch;
-    if (t.vertex_kind(vertex) == VertexKind::interior && is_smooth_vertex(level, vertex)) {
+    const VertexRule rule = creasing(level).vertex_rule[static_cast<std::size_t>(vertex)];
+    if (t.vertex_kind(vertex) == VertexKind::interior && (rule == VertexRule::smooth || rule == VertexRule::dart)) {
       // Read only: no vertex is semi-sharp where an extraordinary patch applies.
       if (semi_sharp_.size() < static_cast<std::size_t>(mesh.vertex_count()))
         semi_sharp_.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
@@ -331,7 +344,7 @@ namespace {
 // Sharp features: infinitely sharp edges (boundaries,
 // creases) and corners split the faces around a vertex into sectors, each
 // evaluated by its own patches; semi-sharp ones are isolated until they
-// have decayed (up to kMaxSemiSharpness). Darts are not covered.
+// have decayed (up to kMaxSemiSharpness).
 void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const RefineOptions& options) {
   const LevelCreasing c = compute_creasing(mesh, t, boundary_of(mesh, options), crease_method_of(mesh, options));
   const auto semi_sharp_refusal = [](const std::string& what, double s) {
@@ -359,8 +372,6 @@ void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const 
     int sharp = 0;
     for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) >= kInfiniteSharpness ? 1 : 0;
     const std::string vertex = "limit evaluation: vertex " + std::to_string(v);
-    if (sharp == 1 && !sharp_corner[static_cast<std::size_t>(v)])
-      throw InvalidInputError(vertex + " ends a crease (a dart); exact evaluation covers creases that run through");
     if (sharp < 2 && sharp_corner[static_cast<std::size_t>(v)])
       throw InvalidInputError(vertex + " is a corner where " + std::to_string(sharp) +
                               " sharp edges meet; exact evaluation covers corners between two or more sharp edges");
