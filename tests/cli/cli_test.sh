@@ -202,9 +202,12 @@ printf '0 0 0\n0 0.5 0.5\n' > "$work/at_quad.txt"
 # A lone quad: four corners (the corner rule), the surface their bilinear patch.
 run eval-boundary 0 eval "$work/one_quad.obj" --at "$work/at_quad.txt" && stdout_has eval-boundary "0 0 0 0 0 1" &&
   stdout_has eval-boundary "0.5 0.5 0 0 0 1"
-# Its concave corner has faces between smooth edges: not covered.
-run eval-corner-tag 1 eval "$meshes/l_shape.obj" --at "$work/at.txt" && stderr_one_line eval-corner-tag &&
-  stderr_has eval-corner-tag "l_shape.obj: limit evaluation: vertex 12 is a corner with a face between smooth edges"
+# A concave corner of three faces (its own model); a crease too sharp to isolate.
+run eval-l-shape 0 eval "$meshes/l_shape.obj" --at "$work/at_quad.txt" && [ "$(wc -l <"$work/out")" -eq 2 ] && pass ||
+  fail "eval-l-shape: expected 2 lines: $(cat "$work/out")"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\nt crease 2/1/0 1 2 5\n' > "$work/sharp5.obj"
+run eval-semi-sharp 1 eval "$work/sharp5.obj" --at "$work/at_quad.txt" && stderr_one_line eval-semi-sharp &&
+  stderr_has eval-semi-sharp "sharp5.obj: limit evaluation: edge 1-2 has sharpness 5.000000; exact evaluation isolates semi-sharp features up to sharpness 4"
 run eval-into-input 1 eval "$meshes/cube.obj" --at "$work/at.txt" -o "$work/at.txt" && stderr_one_line eval-into-input &&
   stderr_has eval-into-input "output is the input file"
 run eval-scheme 1 eval "$meshes/cube.obj" -s doo-sabin --at "$work/at.txt" && stderr_one_line eval-scheme &&
