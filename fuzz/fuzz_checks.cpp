@@ -1,5 +1,7 @@
 #include "fuzz_checks.h"
 
+#include <array>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +11,7 @@
 #include <string_view>
 
 #include "subdiv/core/error.h"
+#include "subdiv/eval/limit_evaluator.h"
 #include "subdiv/io/gltf.h"
 #include "subdiv/io/obj.h"
 #include "subdiv/io/off.h"
@@ -26,6 +29,9 @@ namespace {
 constexpr Index kMaxFaces = 64;
 constexpr Index kMaxVertices = 256;
 constexpr Index kMaxFacesForTwoLevels = 16;
+// Exact evaluation isolates semi-sharp features up to six levels: small
+// meshes only, so that a run stays fast.
+constexpr Index kMaxFacesForEvaluation = 16;
 
 /// A finding: prints why and aborts, so that libFuzzer keeps the input.
 [[noreturn]] void fail(const std::string& why) {
@@ -190,6 +196,32 @@ void check_stl_input(const std::uint8_t* data, std::size_t size) {
   (void)validate(welded.mesh, &welded.lines);
 }
 
+namespace {
+
+// Exact evaluation of a valid mesh: refused with a message, or finite
+// points at the corners and inside every ptex face.
+void check_evaluation(const PolygonMesh& mesh) {
+  for (const char* name : {"catmull-clark", "loop"}) {
+    const Scheme* scheme = find_scheme(name);
+    std::optional<LimitEvaluator> evaluator;
+    try {
+      evaluator.emplace(mesh, *scheme);
+    } catch (const Error&) {
+      continue;  // not covered, with a message
+    }
+    const bool triangles = evaluator->triangles();
+    for (Index f = 0; f < evaluator->ptex_face_count(); ++f) {
+      for (const auto& [u, v] : {std::array<double, 2>{0, 0}, {1, 0}, {0, 1}, {0.25, 0.25}, {triangles ? 0.5 : 1.0, 0.5}}) {
+        const LimitPoint p = evaluator->evaluate(f, u, v);
+        if (!std::isfinite(p.position.x) || !std::isfinite(p.position.y) || !std::isfinite(p.position.z))
+          fail(std::string(name) + " evaluated a non-finite point of a valid mesh");
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void check_pipeline_input(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return;
   const std::uint8_t selector = data[0];
@@ -223,6 +255,7 @@ void check_pipeline_input(const std::uint8_t* data, std::size_t size) {
     if (!report.ok())
       fail(std::string(scheme->name) + " made an invalid mesh from a valid one: " + report.first_error());
   }
+  if (mesh.face_count() <= kMaxFacesForEvaluation) check_evaluation(mesh);
 }
 
 }  // namespace subdiv::fuzz

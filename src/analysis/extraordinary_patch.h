@@ -6,35 +6,42 @@
 /// surfaces", SIGGRAPH 1998), with every matrix read off the project's own
 /// refinement instead of published tables.
 ///
-/// The model is the ring mesh of an interior vertex of valence N; face F is
-/// the first face at its centre, with the centre at parameter (0, 0), the
-/// next corner at (1, 0) and the previous one at (0, 1). Its face ring (the
-/// vertices of the faces touching F: 2N + 8 for a quad, N + 6 for a
-/// triangle, in face_ring() order) is mapped one step down onto the face
-/// ring of F's child at the centre by A, and onto the regular patch points
-/// (16 or 12) of each other child by A_k; both come from
-/// refine_stencil_table() of the ring mesh. A point whose parameter lies in
-/// F's level-n centre child but not in its level-(n+1) one (max(s, t), or
-/// s + t, in [2^-(n+1), 2^-n)) lies in a regular child k of level n: its
-/// value is b(s', t') A_k A^n C with A^n = V Lambda^n V^-1 from the
-/// eigen-decomposition of A (the powers are taken by repeated products where
-/// A is not diagonalizable to working accuracy): evaluate_in_eigenbasis().
-/// evaluate() takes the same formula by products instead, without complex
-/// arithmetic: the rows A_k A^n are kept for the first kCachedLevels levels
-/// (a point there costs one regular patch over the ring's image); for the
-/// next kCachedLevels levels the ring, moved so that the corner's limit is
-/// the origin, is first stepped down by A^kCachedLevels. Closer to the
+/// The model is the ring mesh of the corner's configuration: an interior
+/// vertex of valence N (any face F), a dart (an interior vertex with an
+/// infinitely sharp crease ending at it), or a sector of k faces between
+/// sharp edges at a vertex with the crease rule (the boundary ring mesh) or
+/// the corner rule (the corner ring mesh), F one of them. The centre is at
+/// parameter (0, 0) of F, its next corner at (1, 0) and its previous one at
+/// (0, 1). F's face ring (the vertices of the faces touching F, within the
+/// sectors at its corners, in face_ring() order: 2N + 8 for an interior
+/// quad, N + 6 for an interior triangle) is mapped one step down onto the
+/// face ring of F's child at the centre by A, and onto the regular patch
+/// points (16 or 12, reflections across sharp edges included) of each other
+/// child by A_k; both come from refine_stencil_table() of the ring mesh. A
+/// point whose parameter lies in F's level-n centre child but not in its
+/// level-(n+1) one (max(s, t), or s + t, in [2^-(n+1), 2^-n)) lies in a
+/// regular child k of level n: its value is b(s', t') A_k A^n C.
+///
+/// evaluate_in_eigenbasis() takes A^n = V Lambda^n V^-1 from the
+/// eigen-decomposition of A (by repeated products where A is not
+/// diagonalizable to working accuracy). evaluate() takes the same formula
+/// by real products: the rows A_k A^n are kept for the first kCachedLevels
+/// levels (a point there costs one regular patch over the ring's image); for
+/// the next kCachedLevels levels the ring, moved so that the corner's limit
+/// is the origin, is first stepped down by A^kCachedLevels. Closer to the
 /// corner than 2^-(2 kCachedLevels) evaluate() takes the eigenbasis: there
 /// the products would lose digits of the second derivatives (rounding in
 /// components whose second derivatives vanish, grown by 4^n), which the
 /// eigenbasis drops. Where A has no eigenbasis to working accuracy (Loop at
-/// valence 3: A is defective) the steps go on to any depth, each moved back
-/// onto its limit. The tests hold the routes equal. The quad split's children
-/// keep F's frame at half scale; the triangle split's middle child is F's
-/// frame turned a half turn. Loop at valence 3 is the exception: the
-/// triangles around the middle child's corners wrap around the corner, so
-/// that child is no regular patch; its four children, one level further
-/// down, are regular patches (read off two levels of the ring mesh).
+/// valence 3, most boundary sectors) the steps go on to any depth, each
+/// moved back onto its limit. The tests hold the routes equal.
+///
+/// The quad split's children keep F's frame at half scale; the triangle
+/// split's middle child is F's frame turned a half turn. Where that middle
+/// child is no regular patch (Loop at valence 3, where the triangles around
+/// its corners wrap around the corner; a sector of one face, where it
+/// touches both sharp edges), its four children, one level further down,
+/// are the pieces instead (read off two levels of the ring mesh).
 #include <Eigen/Core>
 #include <array>
 #include <optional>

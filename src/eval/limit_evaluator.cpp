@@ -1,8 +1,8 @@
 // Exact limit evaluation: construction walks each ptex face down the
 // uniform refinement until every face below it is a regular patch or has
-// one extraordinary corner whose face ring matches the model of its valence
-// (isolation), and records those patches with their frames; evaluation
-// finds the patch holding (u, v) and applies its basis.
+// one extraordinary corner whose face ring matches the model of its
+// configuration (isolation), and records those patches with their frames;
+// evaluation finds the patch holding (u, v) and applies its basis.
 
 #include "subdiv/eval/limit_evaluator.h"
 
@@ -31,14 +31,20 @@ namespace subdiv {
 
 namespace {
 
-// Isolation needs at most two levels on a closed untagged mesh (one makes
-// every Catmull-Clark face a quad, the next separates extraordinary
-// vertices); more means a small mesh whose patches reach a vertex twice.
+// Isolation needs two levels on a mesh without semi-sharp features (one
+// makes every Catmull-Clark face a quad, the next separates extraordinary
+// vertices), up to six near semi-sharp ones (kMaxSemiSharpness); more
+// means a small mesh whose patches reach a vertex twice.
 constexpr int kMaxIsolationLevels = 6;
 
 // The largest finite sharpness isolated: a semi-sharp feature decays one
 // level at a time, and its faces become patches a level after it has.
 constexpr double kMaxSemiSharpness = 4.0;
+
+// The largest coordinate taken: patches sum and difference control points
+// with weights of a few units, phantom points reflect them (2 p - q), so
+// coordinates near the double range would overflow.
+constexpr double kMaxCoordinate = 1e300;
 
 // How far outside a ptex face a parameter may lie and still be taken (as
 // the nearest point of the face).
@@ -271,17 +277,15 @@ class LimitEvaluator::Builder {
   }
 
   // The unit normal at an extraordinary corner, from the scheme's tangent
-  // masks (a dart's are the smooth ones). In a sector, the masks of the
-  // sector alone: its faces as a mesh of their own, the vertex on its
-  // boundary with its rule (the sector's side of a crease has its own
-  // normal).
+  // masks (a dart's are the smooth ones); in a sector, those of the sector
+  // alone (each side of a crease has its own normal).
   Vec3 corner_normal(int level, Index corner) {
     const MeshTopology& t = topology(level);
     const PolygonMesh& mesh = hierarchy_.levels[static_cast<std::size_t>(level)].mesh;
     const Index vertex = t.corner_vertex(corner);
-    std::optional<detail::VertexLimit> limit;
-    LimitMasks scratch;
     const VertexRule rule = creasing(level).vertex_rule[static_cast<std::size_t>(vertex)];
+    LimitMasks scratch;
+    std::optional<detail::VertexLimit> limit;
     if (t.vertex_kind(vertex) == VertexKind::interior && (rule == VertexRule::smooth || rule == VertexRule::dart)) {
       // Read only: no vertex is semi-sharp where an extraordinary patch applies.
       if (semi_sharp_.size() < static_cast<std::size_t>(mesh.vertex_count()))
@@ -289,37 +293,7 @@ class LimitEvaluator::Builder {
       limit = detail::closed_form_limit(scheme_, detail::LimitLevel{t, creasing(level), mesh.positions, semi_sharp_},
                                         vertex, scratch);
     } else {
-      PolygonMesh sector;
-      std::vector<Index> local(static_cast<std::size_t>(mesh.vertex_count()), kInvalidIndex);
-      const auto add = [&](Index v) {
-        Index& slot = local[static_cast<std::size_t>(v)];
-        if (slot == kInvalidIndex) {
-          slot = static_cast<Index>(sector.positions.size());
-          sector.positions.push_back(mesh.positions[static_cast<std::size_t>(v)]);
-        }
-        return slot;
-      };
-      const auto faces = sector_faces(level, corner);
-      if (!faces) throw std::logic_error("limit evaluation: an extraordinary corner's sector has no sharp edge");
-      for (const Index c : *faces) {
-        std::vector<Index> face;
-        Index k = c;
-        do {
-          face.push_back(add(t.corner_vertex(k)));
-          k = t.corner_next(k);
-        } while (k != c);
-        sector.add_face(face);
-      }
-      if (creasing(level).vertex_rule[static_cast<std::size_t>(vertex)] == VertexRule::corner)
-        sector.tags.corners.push_back({local[static_cast<std::size_t>(vertex)], kInfiniteSharpness, CornerType::unspecified,
-                                       std::nullopt});
-      const MeshTopology sector_topology(sector);
-      const LevelCreasing sector_creasing =
-          compute_creasing(sector, sector_topology, BoundaryInterpolation::edge_only, CreaseMethod::uniform);
-      const std::vector<char> none(sector.positions.size(), 0);
-      limit = detail::closed_form_limit(
-          scheme_, detail::LimitLevel{sector_topology, sector_creasing, sector.positions, none},
-          local[static_cast<std::size_t>(vertex)], scratch);
+      limit = sector_limit(level, corner, scratch);
     }
     if (!limit) throw std::logic_error("limit evaluation: no tangent masks at an isolated extraordinary vertex");
     const Vec3 n = cross(limit->tangent1, limit->tangent2);
@@ -327,6 +301,44 @@ class LimitEvaluator::Builder {
     return length > 0.0 ? (1.0 / length) * n : Vec3{};
   }
 
+  // The closed-form limit at `corner`'s vertex of its sector alone: the
+  // sector's faces as a mesh of their own, the vertex on its boundary with
+  // its rule (crease, or a corner tag).
+  std::optional<detail::VertexLimit> sector_limit(int level, Index corner, LimitMasks& scratch) {
+    const MeshTopology& t = topology(level);
+    const PolygonMesh& mesh = hierarchy_.levels[static_cast<std::size_t>(level)].mesh;
+    const Index vertex = t.corner_vertex(corner);
+    PolygonMesh sector;
+    std::vector<Index> local(static_cast<std::size_t>(mesh.vertex_count()), kInvalidIndex);
+    const auto add = [&](Index v) {
+      Index& slot = local[static_cast<std::size_t>(v)];
+      if (slot == kInvalidIndex) {
+        slot = static_cast<Index>(sector.positions.size());
+        sector.positions.push_back(mesh.positions[static_cast<std::size_t>(v)]);
+      }
+      return slot;
+    };
+    const auto faces = sector_faces(level, corner);
+    if (!faces) throw std::logic_error("limit evaluation: an extraordinary corner's sector has no sharp edge");
+    for (const Index c : *faces) {
+      std::vector<Index> face;
+      Index k = c;
+      do {
+        face.push_back(add(t.corner_vertex(k)));
+        k = t.corner_next(k);
+      } while (k != c);
+      sector.add_face(face);
+    }
+    if (creasing(level).vertex_rule[static_cast<std::size_t>(vertex)] == VertexRule::corner)
+      sector.tags.corners.push_back(
+          {local[static_cast<std::size_t>(vertex)], kInfiniteSharpness, CornerType::unspecified, std::nullopt});
+    const MeshTopology sector_topology(sector);
+    const LevelCreasing sector_creasing =
+        compute_creasing(sector, sector_topology, BoundaryInterpolation::edge_only, CreaseMethod::uniform);
+    const std::vector<char> none(sector.positions.size(), 0);
+    return detail::closed_form_limit(scheme_, detail::LimitLevel{sector_topology, sector_creasing, sector.positions, none},
+                                     local[static_cast<std::size_t>(vertex)], scratch);
+  }
 
   LimitEvaluator& out_;
   const Scheme& scheme_;
@@ -341,10 +353,10 @@ class LimitEvaluator::Builder {
 
 namespace {
 
-// Sharp features: infinitely sharp edges (boundaries,
-// creases) and corners split the faces around a vertex into sectors, each
-// evaluated by its own patches; semi-sharp ones are isolated until they
-// have decayed (up to kMaxSemiSharpness).
+// Sharp features: infinitely sharp edges (boundaries, creases) and corners
+// split the faces around a vertex into sectors, each evaluated by its own
+// patches; semi-sharp ones are isolated until they have decayed (up to
+// kMaxSemiSharpness).
 void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const RefineOptions& options) {
   const LevelCreasing c = compute_creasing(mesh, t, boundary_of(mesh, options), crease_method_of(mesh, options));
   const auto semi_sharp_refusal = [](const std::string& what, double s) {
@@ -380,13 +392,18 @@ void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const 
 
 // The first element the evaluator cannot handle, as an error.
 void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
-
   // The patches model exactly these two schemes' rules.
   const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name);
   if (name != catmull_clark && name != loop)
     throw InvalidInputError("limit evaluation: " + name + " has no exact evaluator (" + catmull_clark + " and " + loop +
                             " have)");
   check_refinable(mesh, scheme, options);
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3 p = mesh.positions[v];
+    if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate)
+      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " has a coordinate beyond 1e300, which "
+                              "evaluation's sums and differences would overflow (scale the mesh down)");
+  }
   if (!mesh.tags.holes.empty())
     throw InvalidInputError("limit evaluation: the mesh has hole tags, which exact evaluation does not cover yet");
   const MeshTopology t(mesh);

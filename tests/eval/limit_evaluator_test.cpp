@@ -561,6 +561,10 @@ TEST(LimitEvaluator, RefusesWhatItDoesNotCover) {
   tagged.tags.corners.clear();
   tagged.tags.holes = {0};
   refused(tagged, "catmull-clark", "hole tags");
+  // Coordinates near the double range: the patches' sums would overflow.
+  PolygonMesh huge = test::cube();
+  huge.positions[3].y = 1e305;
+  refused(huge, "catmull-clark", "vertex 3 has a coordinate beyond 1e300");
   // A vertex used by no face has no part in the surface: accepted.
   PolygonMesh stray = test::cube();
   stray.positions.push_back({5, 5, 5});
