@@ -66,6 +66,31 @@ void expect_closed_tessellation(const PolygonMesh& control, const char* name, in
   }
 }
 
+// An open mesh: watertight inside (every interior edge of two faces), its
+// boundary made of `rate` edges per control boundary edge, the control
+// vertices at their limits.
+TEST(Tessellate, OpenMeshesKeepTheirBoundary) {
+  for (const char* name : {"catmull-clark", "loop"}) {
+    SCOPED_TRACE(name);
+    const bool loop = std::string(name) == "loop";
+    const PolygonMesh control = test::jittered(loop ? test::triangle_grid(3, 2) : test::quad_grid(3, 2), 7);
+    const LimitEvaluator evaluator(control, scheme(name));
+    constexpr int kRate = 4;
+    const PolygonMesh t = tessellate(control, evaluator, kRate);
+    ASSERT_TRUE(validate(t).ok()) << validate(t).first_error();
+    const MeshTopology topology(t), c(control);
+    Index boundary = 0, control_boundary = 0;
+    for (Index e = 0; e < topology.edge_count(); ++e) boundary += topology.edge_face_count(e) == 1 ? 1 : 0;
+    for (Index e = 0; e < c.edge_count(); ++e) control_boundary += c.edge_face_count(e) == 1 ? 1 : 0;
+    EXPECT_EQ(boundary, kRate * control_boundary);
+    EXPECT_EQ(t.face_count(), control.face_count() * kRate * kRate);
+    const LimitResult limits = limit_positions(control, scheme(name));
+    for (Index v = 0; v < control.vertex_count(); ++v)
+      ASSERT_LE(norm(t.positions[static_cast<std::size_t>(v)] - limits.positions[static_cast<std::size_t>(v)]),
+                1e-12 * diagonal(control));
+  }
+}
+
 TEST(Tessellate, ClosedMeshesGiveClosedWatertightTessellations) {
   for (int rate : {1, 2, 5}) expect_closed_tessellation(test::jittered(test::cube(), 2), "catmull-clark", rate);
   for (int rate : {2, 4, 6}) expect_closed_tessellation(bipyramid(5, 3), "catmull-clark", rate);  // n-gons

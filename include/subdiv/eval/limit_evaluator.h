@@ -2,12 +2,13 @@
 /// \file
 /// The limit surface of Catmull-Clark and Loop at any parameter, exact:
 /// regular faces are the bicubic B-spline and the quartic box spline of
-/// their control points, and a face with one extraordinary corner is
-/// evaluated through the eigenbasis of the scheme's own subdivision matrix at
-/// that corner (Stam, SIGGRAPH 1998), with every matrix read off the
-/// project's refinement. Faces with several extraordinary corners, and
-/// Catmull-Clark's non-quads, are refined uniformly (isolated) until each
-/// face below them is one of those two kinds.
+/// their control points (reflected across boundaries and infinitely sharp
+/// creases), and a face with one extraordinary corner (an interior vertex,
+/// a dart, or a sector between sharp edges) is evaluated through the powers
+/// of the scheme's own subdivision matrix at that corner (Stam, SIGGRAPH
+/// 1998), with every matrix read off the project's refinement. Other faces,
+/// Catmull-Clark's non-quads and faces near semi-sharp features are refined
+/// uniformly (isolated) until each face below them is one of those kinds.
 ///
 /// Parameterization (ptex faces, as OpenSubdiv's Far::PtexIndices):
 /// - a Catmull-Clark quad is one ptex face, (u, v) in [0, 1]^2: its corner 0
@@ -20,9 +21,12 @@
 ///   (0, 0), corner 1 at (1, 0), corner 2 at (0, 1).
 /// Ptex faces are numbered face by face, in face order.
 ///
-/// Scope: closed manifold meshes without tags. Boundaries, creases, corners,
-/// holes and Loop's valence-3 vertices are refused at construction with the
-/// element named.
+/// Scope (docs/evaluation.md lists it by configuration): manifold meshes with
+/// boundaries, infinitely sharp creases, darts, corners between two or more
+/// sharp edges, and semi-sharp features up to sharpness 4. Refused at
+/// construction, with the element named: sharper semi-sharp features, hole
+/// tags, interior vertices of valence 2, corner tags where fewer than two
+/// sharp edges meet, non-manifold vertices, coordinates beyond 1e300.
 
 #include <cstdint>
 #include <array>
@@ -74,14 +78,13 @@ struct SurfaceLocation {
 class LimitEvaluator {
  public:
   /// Prepares the evaluator of \p mesh under \p scheme.
-  /// \param mesh a closed manifold mesh without tags (Loop: triangles).
+  /// \param mesh a manifold mesh in the scope above (Loop: triangles).
   /// \param scheme catmull-clark or loop.
   /// \param options rule choices for the isolating refinement (threads
   ///   included); RefineOptions::levels and start_level are not read.
   /// \throws InvalidInputError, ParameterError or ValidationError as
-  ///   check_refinable() does; InvalidInputError also for another scheme, a
-  ///   boundary, non-manifold or isolated vertex, a tag, or (Loop) a vertex of
-  ///   valence 3, naming the element.
+  ///   check_refinable() does; InvalidInputError also for another scheme or
+  ///   anything outside the scope above, naming the element.
   /// \throws std::bad_alloc if memory runs out.
   LimitEvaluator(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {});
   /// Frees the prepared patches.
