@@ -191,6 +191,8 @@ std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTop
   return out;
 }
 
+namespace {
+
 /// The faces of the sector between sharp edges around corner c's vertex that
 /// holds c's face, all triangles: -1 where a face is not a triangle or the
 /// sector is no sector (a closed fan without sharp edges).
@@ -211,6 +213,8 @@ int triangle_sector_size(const MeshTopology& topology, const LevelCreasing& crea
   }
   return topology.face_size(topology.corner_face(around)) == 3 ? faces : -1;
 }
+
+}  // namespace
 
 bool is_regular_box_spline_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index corner) {
   const Index v = topology.corner_vertex(corner);

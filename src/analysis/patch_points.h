@@ -4,7 +4,9 @@
 /// ordered for the bases of analysis/patch_basis.h: Catmull-Clark's 16 (the
 /// 3 x 3 faces around a quad whose corners are interior vertices of four
 /// quads) and Loop's 12 (the vertices of the triangles touching a triangle
-/// whose corners are interior vertices of six triangles).
+/// whose corners are interior vertices of six triangles); and, next to
+/// boundaries and infinitely sharp creases, the same patches with the
+/// points beyond the sharp edges reflected from those inside (PatchStencil).
 #include <array>
 #include <optional>
 
