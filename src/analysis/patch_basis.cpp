@@ -3,20 +3,6 @@
 namespace subdiv {
 namespace {
 
-}  // namespace
-
-CubicBasis cubic_bspline(double t) noexcept {
-  const double s = 1.0 - t;
-  CubicBasis b{};
-  b.value = {s * s * s / 6.0, (3.0 * t * t * t - 6.0 * t * t + 4.0) / 6.0,
-             (-3.0 * t * t * t + 3.0 * t * t + 3.0 * t + 1.0) / 6.0, t * t * t / 6.0};
-  b.d1 = {-s * s / 2.0, (3.0 * t * t - 4.0 * t) / 2.0, (-3.0 * t * t + 2.0 * t + 1.0) / 2.0, t * t / 2.0};
-  b.d2 = {s, 3.0 * t - 2.0, -3.0 * t + 1.0, t};
-  return b;
-}
-
-namespace {
-
 /// The quartic monomials u^a v^b with a + b <= 4, in Stam's order:
 /// 1, u, v, uu, uv, vv, uuu, uuv, uvv, vvv, uuuu, uuuv, uuvv, uvvv, vvvv.
 constexpr std::array<std::array<int, 2>, 15> kMonomials = {{{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {3, 0},

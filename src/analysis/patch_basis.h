@@ -70,10 +70,19 @@ struct CubicBasis {
 };
 
 /// The uniform cubic B-spline basis on [0, 1] (any real t evaluates the
-/// polynomials).
+/// polynomials). Inline: the evaluators' inner loop calls it twice.
 /// \param t the parameter.
 /// \return the four basis functions and their derivatives.
-CubicBasis cubic_bspline(double t) noexcept;
+inline CubicBasis cubic_bspline(double t) noexcept {
+  constexpr double kSixth = 1.0 / 6.0;
+  const double s = 1.0 - t, t2 = t * t, t3 = t2 * t;
+  CubicBasis b;
+  b.value = {s * s * s * kSixth, (3.0 * t3 - 6.0 * t2 + 4.0) * kSixth, (-3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0) * kSixth,
+             t3 * kSixth};
+  b.d1 = {-0.5 * s * s, 0.5 * (3.0 * t2 - 4.0 * t), 0.5 * (-3.0 * t2 + 2.0 * t + 1.0), 0.5 * t2};
+  b.d2 = {s, 3.0 * t - 2.0, -3.0 * t + 1.0, t};
+  return b;
+}
 
 /// The bicubic B-spline patch at (u, v) as a tensor product: equal to
 /// bicubic_bspline_weights applied to the points, up to rounding.

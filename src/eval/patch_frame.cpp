@@ -96,15 +96,21 @@ void to_ptex(const FrameInverse& inverse, LimitPoint& p) noexcept {
     p.dvv = (k01 * k01) * duu + (2.0 * k01 * k11) * duv + (k11 * k11) * dvv;
   }
   if (p.normal == Vec3{}) {
-    // Each derivative scaled to its largest coordinate first: very close to
-    // an extraordinary corner they can lie beyond what squares can hold.
-    const auto scaled = [](Vec3 d) {
-      const double largest = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
-      return largest > 0.0 ? (1.0 / largest) * d : d;
-    };
-    const Vec3 n = cross(scaled(p.du), scaled(p.dv));
+    const Vec3 n = cross(p.du, p.dv);
     const double length = norm(n);
-    if (length > 0.0) p.normal = (1.0 / length) * n;
+    if (length > 1e-140 && length < 1e140) {
+      p.normal = (1.0 / length) * n;
+    } else {
+      // Each derivative scaled to its largest coordinate first: very close
+      // to an extraordinary corner they can lie beyond what squares hold.
+      const auto scaled = [](Vec3 d) {
+        const double largest = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+        return largest > 0.0 ? (1.0 / largest) * d : d;
+      };
+      const Vec3 m = cross(scaled(p.du), scaled(p.dv));
+      const double l = norm(m);
+      if (l > 0.0) p.normal = (1.0 / l) * m;
+    }
   }
 }
 
