@@ -330,16 +330,24 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
             corner_at(grandchild, parameter2, child_faces(child, split, middle_face), frame), frame);
     }
   }
-  Eigen::MatrixXd power = Eigen::MatrixXd::Identity(size, size);  // A^n
+  // The corner's limit: row 0 (the centre) of A^256, by repeated squaring;
+  // the subdominant eigenvalues' 256th powers are below 1e-40.
+  Eigen::MatrixXd power = A_;
+  for (int i = 0; i < 8; ++i) power = power * power;
+  limit_row_ = power.row(0).transpose();
+
+  // The cached rows: A_k A^n for the first kCachedLevels levels, then
+  // A_k A^n (I - 1 l) (the ring moved onto its limit l first, by products
+  // from I - 1 l, so that rows of decaying size keep their digits).
+  power = Eigen::MatrixXd::Identity(size, size);  // A^n
   for (int n = 0; n < kCachedLevels; ++n, power = A_ * power)
     for (const Child& regular : children_) level_rows_.emplace_back(regular.rows * power);
   step_ = power;
-
-  // The corner's limit: row 0 (the centre) of A^256, by repeated squaring;
-  // the subdominant eigenvalues' 256th powers are below 1e-40.
-  power = A_;
-  for (int i = 0; i < 8; ++i) power = power * power;
-  limit_row_ = power.row(0).transpose();
+  Eigen::MatrixXd moved = Eigen::MatrixXd::Identity(size, size) -
+                          Eigen::VectorXd::Ones(size) * limit_row_.transpose();  // A^n (I - 1 l)
+  for (int n = 0; n < kCachedLevels; ++n) moved = A_ * moved;
+  for (int n = kCachedLevels; n < 2 * kCachedLevels; ++n, moved = A_ * moved)
+    for (const Child& regular : children_) level_rows_.emplace_back(regular.rows * moved);
 
   // The eigenbasis, kept where it reproduces A to working accuracy.
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(A_);
@@ -429,12 +437,12 @@ PatchPoint ExtraordinaryPatch::evaluate(std::span<const Vec3> ring, double s, do
   check(ring, s, t);
   if (s == 0.0 && t == 0.0) return {corner_limit(ring), {}, {}, {}, {}, {}};
   Location at = locate(s, t);
-  if (at.level < kCachedLevels) return to_face(evaluate_cached(ring, at), at.child);
+  if (at.level < 2 * kCachedLevels) return to_face(evaluate_cached(ring, at), at.child);
   // Closer than 2^-(2 kCachedLevels): the eigenbasis, whose scaling keeps
   // every derivative exact however close to the corner.
-  if (at.level >= 2 * kCachedLevels && eigenbasis_) return evaluate_in_eigenbasis(ring, s, t);
-  // Steps of kCachedLevels levels (one, or as many as it takes where A has
-  // no eigenbasis): the ring moved so that the corner's limit is the origin,
+  if (eigenbasis_) return evaluate_in_eigenbasis(ring, s, t);
+  // Where A has none, steps of kCachedLevels levels: the ring moved so that
+  // the corner's limit is the origin,
   // times A^kCachedLevels, scaled by 2^kCachedLevels (the first
   // derivatives' growth; positions are scaled back below, second
   // derivatives get one more factor); then the cached levels. Each step is
@@ -475,8 +483,9 @@ PatchPoint ExtraordinaryPatch::evaluate(std::span<const Vec3> ring, double s, do
 }
 
 PatchPoint ExtraordinaryPatch::evaluate_cached(std::span<const Vec3> ring, const Location& at) const {
-  // The child's regular patch points, A_k A^n times the ring; then its
-  // derivatives in F's level-n frame, 2^n per order.
+  // The child's regular patch points, A_k A^n times the ring (from level
+  // kCachedLevels on, the ring moved onto its limit, added back below);
+  // then its derivatives in F's level-n frame, 2^n per order.
   const auto& rows = level_rows_[children_.size() * static_cast<std::size_t>(at.level) + at.child];
   const auto patch_points = [&](auto& points) {
     for (std::size_t r = 0; r < points.size(); ++r) {
@@ -496,6 +505,7 @@ PatchPoint ExtraordinaryPatch::evaluate_cached(std::span<const Vec3> ring, const
     patch_points(points);
     point = box_spline_point(points, at.u, at.v);
   }
+  if (at.level >= kCachedLevels) point.position += corner_limit(ring);
   const double first = std::ldexp(1.0, at.level), second = first * first;
   point.du = first * point.du;
   point.dv = first * point.dv;

@@ -25,17 +25,18 @@
 /// evaluate_in_eigenbasis() takes A^n = V Lambda^n V^-1 from the
 /// eigen-decomposition of A (by repeated products where A is not
 /// diagonalizable to working accuracy). evaluate() takes the same formula
-/// by real products: the rows A_k A^n are kept for the first kCachedLevels
-/// levels (a point there costs one regular patch over the ring's image); for
-/// the next kCachedLevels levels the ring, moved so that the corner's limit
-/// is the origin, is first stepped down by A^kCachedLevels. Closer to the
-/// corner than 2^-(2 kCachedLevels) evaluate() takes the eigenbasis: there
-/// the products would lose digits of the second derivatives (rounding in
-/// components whose second derivatives vanish, grown by 4^n), which the
-/// eigenbasis drops. Where A has no eigenbasis to working accuracy (Loop at
-/// valence 3, most boundary sectors) the steps go on to any depth, each
-/// moved back onto its limit. The tests hold the routes equal.
-///
+/// by real products, with rows kept per model: A_k A^n for the first
+/// kCachedLevels levels, then A_k A^n (I - 1 l) for as many more (the ring
+/// moved onto the corner's limit l, which is added back: rows of decaying
+/// size keep their digits), so that a point there costs one regular patch
+/// over the ring's image. Closer to the corner than 2^-(2 kCachedLevels)
+/// evaluate() takes the eigenbasis: there the products would lose digits of
+/// the second derivatives (rounding in components whose second derivatives
+/// vanish, grown by 4^n), which the eigenbasis drops. Where A has no
+/// eigenbasis to working accuracy (Loop at valence 3, most boundary
+/// sectors) the ring is stepped down by A^kCachedLevels to any depth, each
+/// step moved back onto its limit. The tests hold the routes equal.
+
 /// The quad split's children keep F's frame at half scale; the triangle
 /// split's middle child is F's frame turned a half turn. Where that middle
 /// child is no regular patch (Loop at valence 3, where the triangles around
@@ -159,9 +160,9 @@ class ExtraordinaryPatch {
   /// \throws InvalidInputError as evaluate().
   PatchPoint evaluate_in_eigenbasis(std::span<const Vec3> ring, double s, double t) const;
 
-  /// The levels n whose children's rows over the ring, A_k A^n, are kept,
-  /// and the step to the next as many (see the file comment). Eight levels
-  /// cost 24 matrices of 16 (12) x K per valence.
+  /// Half the levels n whose children's rows over the ring are kept, and
+  /// the step of the deeper ones (see the file comment). Sixteen levels
+  /// cost 48 matrices of 16 (12) x K per model.
   static constexpr int kCachedLevels = 8;
 
  private:
@@ -197,7 +198,7 @@ class ExtraordinaryPatch {
   // children take its place (see the constructor).
   std::vector<Child> children_;
   using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  std::vector<RowMajor> level_rows_;  // A_k A^n for level n < kCachedLevels, at [pieces n + k]
+  std::vector<RowMajor> level_rows_;  // level n < 2 kCachedLevels, piece k at [pieces n + k]
   RowMajor step_;                     // A^kCachedLevels
   std::vector<int> signature_;
   std::vector<Vec3> layout_;
