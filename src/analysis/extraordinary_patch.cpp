@@ -38,11 +38,6 @@ std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner, co
       c = topology.corner_next(c);
     } while (c != from);
   };
-  // An edge the walk around a vertex stops at: a boundary, or sharp.
-  const auto stops = [&](Index c) {
-    return topology.corner_across(c) == kInvalidIndex ||
-           (creasing && edge_sharpness_of(*creasing, topology.corner_edge(c)) > 0.0);
-  };
   Index c = corner;
   do {
     const Index v = topology.corner_vertex(c);
@@ -63,22 +58,13 @@ std::optional<FaceRing> face_ring(const MeshTopology& topology, Index corner, co
       } while (around != c);
     } else {
       if (!creasing) return std::nullopt;
-      // The sector of the face between sharp edges: back (clockwise) to its
-      // first face, then counter-clockwise to its last; the signature notes
-      // v's rule and how far into the sector the face lies.
-      int offset = 0;
-      while (!stops(around)) {
-        around = topology.corner_next(topology.corner_across(around));
-        if (++offset > topology.vertex_face_count(v)) return std::nullopt;
-      }
+      // The face's sector between sharp edges, from its first face; the
+      // signature notes v's rule and how far into the sector the face lies.
+      const auto sector = sector_corners(topology, *creasing, c);
+      if (!sector) return std::nullopt;
       ring.signature.push_back(-10 - static_cast<int>(creasing->vertex_rule[static_cast<std::size_t>(v)]));
-      ring.signature.push_back(-100 - offset);
-      while (true) {
-        visit_face(around);
-        if (++faces > topology.vertex_face_count(v)) return std::nullopt;
-        if (stops(topology.corner_prev(around))) break;
-        around = topology.corner_across(topology.corner_prev(around));
-      }
+      ring.signature.push_back(-100 - static_cast<int>(std::find(sector->begin(), sector->end(), c) - sector->begin()));
+      for (const Index k : *sector) visit_face(k);
     }
     ring.signature.push_back(-1);  // end of the fan
     c = topology.corner_next(c);

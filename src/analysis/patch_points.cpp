@@ -191,30 +191,25 @@ std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTop
   return out;
 }
 
-namespace {
-
-/// The faces of the sector between sharp edges around corner c's vertex that
-/// holds c's face, all triangles: -1 where a face is not a triangle or the
-/// sector is no sector (a closed fan without sharp edges).
-int triangle_sector_size(const MeshTopology& topology, const LevelCreasing& creasing, Index c) {
-  const Index v = topology.corner_vertex(c);
+std::optional<std::vector<Index>> sector_corners(const MeshTopology& topology, const LevelCreasing& creasing,
+                                                 Index corner) {
   const auto stops = [&](Index k) {
     return topology.corner_across(k) == kInvalidIndex || edge_sharpness_of(creasing, topology.corner_edge(k)) > 0.0;
   };
-  const Index limit = topology.vertex_face_count(v);
-  Index around = c;
+  const Index faces = topology.vertex_face_count(topology.corner_vertex(corner));
+  // Back (clockwise, across the edge leaving the vertex) to the first face,
+  // then counter-clockwise (across the edge entering it) to the last.
+  Index around = corner;
   for (Index steps = 0; !stops(around); around = topology.corner_next(topology.corner_across(around)))
-    if (++steps > limit) return -1;
-  int faces = 1;
+    if (++steps > faces) return std::nullopt;
+  std::vector<Index> sector{around};
   while (!stops(topology.corner_prev(around))) {
-    if (topology.face_size(topology.corner_face(around)) != 3) return -1;
     around = topology.corner_across(topology.corner_prev(around));
-    if (++faces > limit) return -1;
+    sector.push_back(around);
+    if (static_cast<Index>(sector.size()) > faces) return std::nullopt;
   }
-  return topology.face_size(topology.corner_face(around)) == 3 ? faces : -1;
+  return sector;
 }
-
-}  // namespace
 
 bool is_regular_box_spline_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index corner) {
   const Index v = topology.corner_vertex(corner);
@@ -232,7 +227,11 @@ bool is_regular_box_spline_corner(const MeshTopology& topology, const LevelCreas
     return true;
   }
   // On a straight crease or a boundary: three triangles on the face's side.
-  return rule == VertexRule::crease && triangle_sector_size(topology, creasing, corner) == 3;
+  if (rule != VertexRule::crease) return false;
+  const auto sector = sector_corners(topology, creasing, corner);
+  return sector && sector->size() == 3 && std::all_of(sector->begin(), sector->end(), [&](Index c) {
+           return topology.face_size(topology.corner_face(c)) == 3;
+         });
 }
 
 std::optional<std::array<PatchStencil, 12>> box_spline_patch_stencils(const MeshTopology& topology,

@@ -9,6 +9,7 @@
 /// points beyond the sharp edges reflected from those inside (PatchStencil).
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "subdiv/core/types.h"
 #include "subdiv/mesh/topology.h"
@@ -67,6 +68,19 @@ std::optional<std::array<PatchStencil, 16>> bicubic_patch_stencils(const MeshTop
 /// \return whether it is.
 /// \pre \p corner is in [0, topology.corner_count()) (unchecked).
 bool is_regular_patch_corner(const MeshTopology& topology, const LevelCreasing& creasing, Index corner);
+
+/// The sector between sharp edges (edges of positive sharpness, or boundary
+/// edges) around `corner`'s vertex that holds `corner`'s face.
+/// \param topology the level's topology.
+/// \param creasing the level's creasing.
+/// \param corner a corner of the face.
+/// \return the corners at the vertex of the sector's faces, counter-clockwise
+///   from the first (whose edge leaving the vertex is sharp) to the last
+///   (whose edge entering it is); empty where no sharp edge bounds the faces
+///   around the vertex (a closed fan is no sector).
+/// \pre \p corner is in [0, topology.corner_count()) (unchecked).
+std::optional<std::vector<Index>> sector_corners(const MeshTopology& topology, const LevelCreasing& creasing,
+                                                 Index corner);
 
 /// Whether the vertex at `corner` is one of box_spline_patch_stencils'
 /// corner kinds for the triangle holding `corner`.

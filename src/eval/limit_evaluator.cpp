@@ -176,7 +176,7 @@ class LimitEvaluator::Builder {
       const double sharpness = edge_sharpness_of(c, e);
       if (sharpness > 0.0 && sharpness < kInfiniteSharpness) return std::nullopt;
     }
-    const auto sector = sector_faces(level, corner);
+    const auto sector = sector_corners(topology(level), creasing(level), corner);
     if (!sector) return std::nullopt;
     const auto position = static_cast<int>(std::find(sector->begin(), sector->end(), corner) - sector->begin());
     if (rule == VertexRule::dart) {
@@ -186,27 +186,6 @@ class LimitEvaluator::Builder {
     return Model{Configuration{rule == VertexRule::crease ? Configuration::Kind::boundary : Configuration::Kind::corner,
                                static_cast<int>(sector->size())},
                  position, false};
-  }
-
-  // The corners at `corner`'s vertex of the faces of its sector between
-  // sharp edges (or boundary edges), counter-clockwise from the first.
-  std::optional<std::vector<Index>> sector_faces(int level, Index corner) {
-    const MeshTopology& t = topology(level);
-    const LevelCreasing& c = creasing(level);
-    const auto stops = [&](Index k) {
-      return t.corner_across(k) == kInvalidIndex || edge_sharpness_of(c, t.corner_edge(k)) > 0.0;
-    };
-    const Index faces = t.vertex_face_count(t.corner_vertex(corner));
-    Index around = corner;
-    for (Index steps = 0; !stops(around); around = t.corner_next(t.corner_across(around)))
-      if (++steps > faces) return std::nullopt;  // no sharp edge: not a sector
-    std::vector<Index> sector{around};
-    while (!stops(t.corner_prev(around))) {
-      around = t.corner_across(t.corner_prev(around));
-      sector.push_back(around);
-      if (static_cast<Index>(sector.size()) > faces) return std::nullopt;
-    }
-    return sector;
   }
 
   void add_leaf(int level, const Frame& frame, const ExtraordinaryPatch* patch, std::span<const Index> points,
@@ -318,7 +297,7 @@ class LimitEvaluator::Builder {
       }
       return slot;
     };
-    const auto faces = sector_faces(level, corner);
+    const auto faces = sector_corners(topology(level), creasing(level), corner);
     if (!faces) throw std::logic_error("limit evaluation: an extraordinary corner's sector has no sharp edge");
     for (const Index c : *faces) {
       std::vector<Index> face;
