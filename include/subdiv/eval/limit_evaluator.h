@@ -28,8 +28,8 @@
 /// tags, interior vertices of valence 2, corner tags where fewer than two
 /// sharp edges meet, non-manifold vertices, coordinates beyond 1e300.
 
-#include <cstdint>
 #include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <span>
