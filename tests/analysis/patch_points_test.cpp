@@ -14,6 +14,7 @@
 #include "depth/depth_test_meshes.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/mesh/topology.h"
+#include "subdiv/refine/creasing.h"
 #include "subdiv/rules/scheme.h"
 #include "support/test_meshes.h"
 
@@ -130,6 +131,34 @@ TEST(PatchPoints, BoxSplineCornersAreLoopsLimitPositions) {
   std::mt19937 random(13);
   expect_patch_corners_are_limits<12>(perturbed(triangle_torus(8, 6, 3.0, 1.0), 0.1, random), "loop",
                                       box_spline_patch_points, box_spline_weights);
+}
+
+// Without sharp edges the reflected patches are the plain ones, point for
+// point, at every corner (on a torus and on an open grid's inside).
+TEST(PatchPoints, StencilsWithoutSharpEdgesAreThePlainPatches) {
+  const auto expect_same = [](const PolygonMesh& mesh, auto plain, auto stencils) {
+    const MeshTopology topology(mesh);
+    const LevelCreasing creasing =
+        compute_creasing(mesh, topology, BoundaryInterpolation::edge_only, CreaseMethod::uniform);
+    int patches = 0;
+    for (Index c = 0; c < topology.corner_count(); ++c) {
+      const auto a = plain(topology, c);
+      const auto b = stencils(topology, creasing, c);
+      // Next to the grid's boundary only the stencils have a patch.
+      if (!a) continue;
+      ASSERT_TRUE(b.has_value()) << "corner " << c;
+      for (std::size_t i = 0; i < a->size(); ++i) {
+        ASSERT_EQ((*b)[i].size, 1) << "corner " << c << ", point " << i;
+        EXPECT_EQ((*b)[i].vertex[0], (*a)[i]) << "corner " << c << ", point " << i;
+      }
+      ++patches;
+    }
+    EXPECT_GT(patches, 0);
+  };
+  expect_same(quad_torus(8, 6, 3.0, 1.0), bicubic_patch_points, bicubic_patch_stencils);
+  expect_same(test::quad_grid(6, 5), bicubic_patch_points, bicubic_patch_stencils);
+  expect_same(triangle_torus(8, 6, 3.0, 1.0), box_spline_patch_points, box_spline_patch_stencils);
+  expect_same(test::box_spline_grid(6, 5), box_spline_patch_points, box_spline_patch_stencils);
 }
 
 }  // namespace
