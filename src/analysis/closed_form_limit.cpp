@@ -1,5 +1,7 @@
 #include "closed_form_limit.h"
 
+#include "dart_limit.h"
+
 namespace subdiv::detail {
 
 namespace {
@@ -52,9 +54,12 @@ std::optional<VertexLimit> closed_form_limit(const Scheme& scheme, const LimitLe
     n.sharp[0] = 0;
     n.sharp[1] = 1;
   }
-  if (!scheme.limit_masks(n, scratch)) return std::nullopt;
+  // A dart's masks are its own matrix's eigenvectors (dart_limit.h), not
+  // the smooth masks the scheme's closed forms give it.
+  const bool dart = rule == VertexRule::dart;
+  if (!(dart ? dart_limit_masks(scheme, n, scratch) : scheme.limit_masks(n, scratch))) return std::nullopt;
   return VertexLimit{apply(scratch.position, level, v), apply(scratch.tangent1, level, v),
-                     apply(scratch.tangent2, level, v)};
+                     apply(scratch.tangent2, level, v), dart};
 }
 
 }  // namespace subdiv::detail

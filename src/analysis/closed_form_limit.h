@@ -17,6 +17,9 @@ struct VertexLimit {
   Vec3 position;
   Vec3 tangent1;
   Vec3 tangent2;
+  /// From the eigenvectors of the vertex's own matrix (a dart), not the
+  /// scheme's closed forms.
+  bool eigenvectors = false;
 };
 
 /// The level a vertex is evaluated on: its topology, creasing, positions,
@@ -31,6 +34,7 @@ struct LimitLevel {
 /// nullopt where the scheme's masks do not apply: a non-manifold vertex, a
 /// face of another size than the split's, a semi-sharp edge or vertex sharpness
 /// still to resolve, or a neighbourhood the scheme has no closed form for.
+/// Darts take their own matrix's eigenvectors (dart_limit.h).
 std::optional<VertexLimit> closed_form_limit(const Scheme& scheme, const LimitLevel& level, Index v,
                                              LimitMasks& scratch);
 

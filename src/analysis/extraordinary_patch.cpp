@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "analysis/dart_limit.h"
 #include "analysis/patch_basis.h"
 #include "analysis/patch_points.h"
 #include "subdiv/core/error.h"
@@ -99,25 +100,6 @@ Eigen::MatrixXd rows_over_ring(const StencilTable& table, const std::vector<Patc
   return m;
 }
 
-/// A dart at the ring mesh's centre: an infinitely sharp crease from the
-/// centre along its first face's edge leaving it, straight on (through the
-/// opposite edge at each regular vertex) to the ring mesh's boundary.
-void add_dart(RingMesh& model, Index regular_valence) {
-  const MeshTopology t(model.mesh);
-  Index from = model.centre;
-  Index e = t.corner_edge(t.vertex_corners(model.centre)[0]);
-  while (true) {
-    const auto [a, b] = t.edge_vertices(e);
-    model.mesh.tags.creases.push_back({a, b, kInfiniteSharpness});
-    const Index to = a == from ? b : a;
-    const auto edges = t.vertex_edges(to);
-    if (t.vertex_kind(to) != VertexKind::interior || static_cast<Index>(edges.size()) != regular_valence) break;
-    const auto i = static_cast<std::size_t>(std::find(edges.begin(), edges.end(), e) - edges.begin());
-    e = edges[(i + edges.size() / 2) % edges.size()];
-    from = to;
-  }
-}
-
 /// The parent's infinitely sharp crease and corner tags on the child of a
 /// split: each crease on its edge's two children.
 void carry_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map, PolygonMesh& child) {
@@ -181,7 +163,7 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
   // Its boundary edges are sharp, and a boundary centre keeps the crease
   // rule whatever its face count (edge_only), unless it is a corner.
   RingMesh model = ring_mesh(split, configuration, 4);
-  if (dart) add_dart(model, quads ? 4 : 6);
+  if (dart) detail::add_dart(model, quads ? 4 : 6);
   const MeshTopology parent(model.mesh);
   const auto creasing_of = [](const PolygonMesh& mesh, const MeshTopology& topology) {
     return compute_creasing(mesh, topology, BoundaryInterpolation::edge_only, CreaseMethod::uniform);

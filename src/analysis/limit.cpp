@@ -660,7 +660,7 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
     if (closed_form) {
       if (const auto limit = detail::closed_form_limit(scheme, level, v, scratch)) {
         result.positions[i] = limit->position;
-        result.sources[i] = LimitSource::closed_form;
+        result.sources[i] = limit->eigenvectors ? LimitSource::generic : LimitSource::closed_form;
         if (!options.normals) continue;
         result.tangents1[i] = limit->tangent1;
         result.tangents2[i] = limit->tangent2;

@@ -26,6 +26,7 @@
 #include "../analysis/patch_basis.h"
 #include "../analysis/patch_points.h"
 #include "patch_frame.h"
+#include "refined_surface.h"
 
 namespace subdiv {
 
@@ -63,6 +64,15 @@ class LimitEvaluator::Builder {
     options_.start_level = 0;
     hierarchy_ = refine_hierarchy(mesh, scheme, options_, KeepLevels::all);
   }
+  // Approximate evaluation: every ptex face down to the last level of
+  // `refined`, each face there an interpolant of its corners' limits.
+  Builder(LimitEvaluator& out, detail::RefinedSurface&& refined, const Scheme& scheme, const RefineOptions& options)
+      : out_(out), scheme_(scheme), options_(options), hierarchy_(std::move(refined.hierarchy)) {
+    options_.levels = 0;
+    options_.start_level = 0;
+    linear_level_ = static_cast<int>(hierarchy_.levels.size()) - 1;
+    last_normals_ = std::move(refined.normals);
+  }
 
   void build() {
     const MeshTopology& coarse = topology(0);
@@ -89,6 +99,11 @@ class LimitEvaluator::Builder {
     // -1 - their number.
     const auto phantom_offset = static_cast<Index>(out_.positions_.size());
     out_.positions_.insert(out_.positions_.end(), phantoms_.begin(), phantoms_.end());
+    if (linear_level_ >= 0) {  // the last level's limit normals, by position index
+      out_.normals_.assign(out_.positions_.size(), Vec3{});
+      std::copy(last_normals_.begin(), last_normals_.end(),
+                out_.normals_.begin() + static_cast<std::ptrdiff_t>(offset[static_cast<std::size_t>(linear_level_)]));
+    }
     for (std::size_t i = 0; i < out_.leaves_.size(); ++i) {
       const std::size_t end = i + 1 < out_.leaves_.size() ? out_.leaves_[i + 1].first_control : out_.control_.size();
       for (std::size_t c = out_.leaves_[i].first_control; c < end; ++c) {
@@ -195,17 +210,38 @@ class LimitEvaluator::Builder {
     leaf_level_.push_back(level);
   }
 
-  // The patches of `face` on `level`, whose corner 0 is at frame.origin.
+  // The patches of `face` on `level`, whose corner 0 is at frame.origin;
+  // approximate evaluation: the faces below it on the last level.
   void add_leaves(int level, Index face, const Frame& frame) {
+    const MeshTopology& t = topology(level);
+    if (linear_level_ >= 0) {
+      if (level == linear_level_) return add_leaf(level, frame, nullptr, t.face_vertices(face));
+    } else if (add_patch(level, face, frame)) {
+      return;
+    }
+    const Index first = t.face_first_corner(face);
+    if (out_.triangles_) {
+      for (int k = 0; k < 4; ++k) add_leaves(level + 1, 4 * face + k, detail::triangle_child_frame(frame, k));
+    } else {  // a quad here: only the coarse level has other faces, and those are ptex sub-faces
+      for (int k = 0; k < 4; ++k) add_leaves(level + 1, first + k, detail::quad_child_frame(frame, k));
+    }
+  }
+
+  // The patch of `face` on `level` where it is one: a regular patch or one
+  // extraordinary corner whose model applies.
+  bool add_patch(int level, Index face, const Frame& frame) {
     const MeshTopology& t = topology(level);
     const Index size = out_.triangles_ ? 3 : 4;
     if (t.face_size(face) == size) {
       const Index first = t.face_first_corner(face);
       if (out_.triangles_) {
-        if (const auto stencils = box_spline_patch_stencils(t, creasing(level), first))
-          return add_leaf(level, frame, nullptr, control_points(level, std::span<const PatchStencil>(*stencils)));
+        if (const auto stencils = box_spline_patch_stencils(t, creasing(level), first)) {
+          add_leaf(level, frame, nullptr, control_points(level, std::span<const PatchStencil>(*stencils)));
+          return true;
+        }
       } else if (const auto stencils = bicubic_patch_stencils(t, creasing(level), first)) {
-        return add_leaf(level, frame, nullptr, control_points(level, std::span<const PatchStencil>(*stencils)));
+        add_leaf(level, frame, nullptr, control_points(level, std::span<const PatchStencil>(*stencils)));
+        return true;
       }
       // One extraordinary corner, the others regular: its model's patch.
       int irregular = 0;
@@ -222,17 +258,14 @@ class LimitEvaluator::Builder {
       if (m) {
         const ExtraordinaryPatch& patch = model(*m);
         const auto ring = face_ring(t, corner, &creasing(level));
-        if (ring && ring->signature == patch.signature())
-          return add_leaf(level, detail::frame_at_corner(frame, static_cast<int>(corner - first), out_.triangles_),
-                          &patch, ring->vertices, corner_normal(level, corner));
+        if (ring && ring->signature == patch.signature()) {
+          add_leaf(level, detail::frame_at_corner(frame, static_cast<int>(corner - first), out_.triangles_), &patch,
+                   ring->vertices, corner_normal(level, corner));
+          return true;
+        }
       }
     }
-    const Index first = t.face_first_corner(face);
-    if (out_.triangles_) {
-      for (int k = 0; k < 4; ++k) add_leaves(level + 1, 4 * face + k, detail::triangle_child_frame(frame, k));
-    } else {  // a quad here: only the coarse level has other faces, and those are ptex sub-faces
-      for (int k = 0; k < 4; ++k) add_leaves(level + 1, first + k, detail::quad_child_frame(frame, k));
-    }
+    return false;
   }
 
   // The patch's control points: its vertices (level-local indices), and
@@ -328,6 +361,8 @@ class LimitEvaluator::Builder {
   std::vector<std::unique_ptr<LevelCreasing>> creasings_;  // per level, when asked
   std::vector<Vec3> phantoms_;                              // phantom control points, in order
   std::vector<char> semi_sharp_;  // all zero
+  int linear_level_ = -1;         // approximate evaluation: the level interpolated
+  std::vector<Vec3> last_normals_;  // approximate evaluation: that level's limit normals
 };
 
 namespace {
@@ -335,24 +370,24 @@ namespace {
 // Sharp features: infinitely sharp edges (boundaries, creases) and corners
 // split the faces around a vertex into sectors, each evaluated by its own
 // patches; semi-sharp ones are isolated until they have decayed (up to
-// kMaxSemiSharpness).
-void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const RefineOptions& options) {
+// kMaxSemiSharpness). The first feature outside that, as a reason.
+std::optional<std::string> sharp_feature_refusal(const PolygonMesh& mesh, const MeshTopology& t,
+                                                 const RefineOptions& options) {
   const LevelCreasing c = compute_creasing(mesh, t, boundary_of(mesh, options), crease_method_of(mesh, options));
   const auto semi_sharp_refusal = [](const std::string& what, double s) {
-    return InvalidInputError("limit evaluation: " + what + " has sharpness " + std::to_string(s) +
-                             "; exact evaluation isolates semi-sharp features up to sharpness " +
-                             std::to_string(static_cast<int>(kMaxSemiSharpness)));
+    return what + " has sharpness " + std::to_string(s) + "; exact evaluation isolates semi-sharp features up to "
+           "sharpness " + std::to_string(static_cast<int>(kMaxSemiSharpness));
   };
   for (Index e = 0; e < t.edge_count(); ++e) {
     const double s = edge_sharpness_of(c, e);
     if (s > kMaxSemiSharpness && s < kInfiniteSharpness) {
       const auto [a, b] = t.edge_vertices(e);
-      throw semi_sharp_refusal("edge " + std::to_string(a) + "-" + std::to_string(b), s);
+      return semi_sharp_refusal("edge " + std::to_string(a) + "-" + std::to_string(b), s);
     }
   }
   for (const CornerTag& corner : mesh.tags.corners)
     if (corner.sharpness > kMaxSemiSharpness && corner.sharpness < kInfiniteSharpness)
-      throw semi_sharp_refusal("the corner tag of vertex " + std::to_string(corner.vertex), corner.sharpness);
+      return semi_sharp_refusal("the corner tag of vertex " + std::to_string(corner.vertex), corner.sharpness);
   // What stays once semi-sharp features have decayed: the infinitely sharp
   // edges and corner tags.
   std::vector<char> sharp_corner(static_cast<std::size_t>(t.vertex_count()), 0);
@@ -362,20 +397,15 @@ void check_sharp_features(const PolygonMesh& mesh, const MeshTopology& t, const 
   for (Index v = 0; v < t.vertex_count(); ++v) {
     int sharp = 0;
     for (const Index e : t.vertex_edges(v)) sharp += edge_sharpness_of(c, e) >= kInfiniteSharpness ? 1 : 0;
-    const std::string vertex = "limit evaluation: vertex " + std::to_string(v);
     if (sharp < 2 && sharp_corner[static_cast<std::size_t>(v)])
-      throw InvalidInputError(vertex + " is a corner where " + std::to_string(sharp) +
-                              " sharp edges meet; exact evaluation covers corners between two or more sharp edges");
+      return "vertex " + std::to_string(v) + " is a corner where " + std::to_string(sharp) +
+             " sharp edges meet; exact evaluation covers corners between two or more sharp edges";
   }
+  return std::nullopt;
 }
 
-// The first element the evaluator cannot handle, as an error.
-void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
-  // The patches model exactly these two schemes' rules.
-  const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name);
-  if (name != catmull_clark && name != loop)
-    throw InvalidInputError("limit evaluation: " + name + " has no exact evaluator (" + catmull_clark + " and " + loop +
-                            " have)");
+// What neither evaluation takes, as an error naming the element.
+void check_common_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
   check_refinable(mesh, scheme, options);
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const Vec3 p = mesh.positions[v];
@@ -384,27 +414,53 @@ void check_scope(const PolygonMesh& mesh, const Scheme& scheme, const RefineOpti
                               "evaluation's sums and differences would overflow (scale the mesh down)");
   }
   if (!mesh.tags.holes.empty())
-    throw InvalidInputError("limit evaluation: the mesh has hole tags, which exact evaluation does not cover yet");
+    throw InvalidInputError("limit evaluation: the mesh has hole tags, which evaluation does not cover yet");
   const MeshTopology t(mesh);
   for (Index v = 0; v < t.vertex_count(); ++v) {
     const VertexKind kind = t.vertex_kind(v);
     // (A vertex used by no face has no part in the surface.)
     if (kind != VertexKind::interior && kind != VertexKind::boundary && kind != VertexKind::isolated)
       throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " is non-manifold");
-    if (kind == VertexKind::interior && t.valence(v) < 3)
-      throw InvalidInputError("limit evaluation: vertex " + std::to_string(v) + " has valence " +
-                              std::to_string(t.valence(v)) + "; exact evaluation covers interior vertices of valence 3 "
-                              "and more");
   }
-  check_sharp_features(mesh, t, options);
 }
 
 }  // namespace
 
+std::optional<std::string> LimitEvaluator::exact_evaluation_unavailable(const PolygonMesh& mesh, const Scheme& scheme,
+                                                                         const RefineOptions& options) {
+  // The patches model exactly these two schemes' rules.
+  const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name);
+  if (name != catmull_clark && name != loop)
+    return name + " has no exact evaluator (" + catmull_clark + " and " + loop + " have)";
+  const MeshTopology t(mesh);
+  for (Index v = 0; v < t.vertex_count(); ++v)
+    if (t.vertex_kind(v) == VertexKind::interior && t.valence(v) < 3)
+      return "vertex " + std::to_string(v) + " has valence " + std::to_string(t.valence(v)) +
+             "; exact evaluation covers interior vertices of valence 3 and more";
+  return sharp_feature_refusal(mesh, t, options);
+}
+
 LimitEvaluator::LimitEvaluator(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options) {
-  check_scope(mesh, scheme, options);
+  check_common_scope(mesh, scheme, options);
+  if (const auto reason = exact_evaluation_unavailable(mesh, scheme, options))
+    throw InvalidInputError("limit evaluation: " + *reason);
   triangles_ = scheme.split == SplitRule::triangle;
   Builder(*this, mesh, scheme, options).build();
+}
+
+LimitEvaluator LimitEvaluator::by_refinement(const PolygonMesh& mesh, const Scheme& scheme, double accuracy,
+                                             const RefineOptions& options, int max_levels) {
+  if (const auto reason = detail::refined_evaluation_unavailable(scheme))
+    throw InvalidInputError("approximate evaluation: " + std::string(scheme.name) + ": " + *reason);
+  check_common_scope(mesh, scheme, options);
+  detail::RefinedSurface refined = detail::refine_to_accuracy(mesh, scheme, options, accuracy, max_levels);
+  LimitEvaluator out;
+  out.triangles_ = scheme.split == SplitRule::triangle;
+  out.exact_ = false;
+  out.measured_change_ = refined.measured_change;
+  out.unresolved_vertices_ = refined.unresolved;
+  Builder(out, std::move(refined), scheme, options).build();
+  return out;
 }
 
 LimitEvaluator::~LimitEvaluator() noexcept = default;
@@ -432,6 +488,14 @@ LimitPoint LimitEvaluator::evaluate(Index face, double u, double v) const {
   check_location(face, u, v);
   const auto first = static_cast<std::size_t>(ptex_leaves_[static_cast<std::size_t>(face)]);
   const auto last = static_cast<std::size_t>(ptex_leaves_[static_cast<std::size_t>(face) + 1]);
+  if (!exact_) {
+    const std::size_t leaf = leaf_by_descent(first, last - first, u, v);
+    const detail::PatchParameter at =
+        detail::clamp_into(detail::to_patch(leaves_[leaf].frame, leaves_[leaf].inverse, u, v), triangles_);
+    LimitPoint point = evaluate_interpolant(leaves_[leaf], at.s, at.t);
+    detail::to_ptex(leaves_[leaf].inverse, point);
+    return point;
+  }
   // The patch holding (u, v): the first one it lies in, else (rounding on
   // a shared edge) the nearest, with (s, t) clamped into it.
   std::size_t best = first;
@@ -475,6 +539,65 @@ LimitPoint LimitEvaluator::evaluate_leaf(const Leaf& leaf, double s, double t) c
   LimitPoint p{q.position, q.du, q.dv, q.duu, q.duv, q.dvv, {}};
   if (leaf.extraordinary && s == 0.0 && t == 0.0) p.normal = leaf.corner_normal;
   return p;
+}
+
+std::size_t LimitEvaluator::leaf_by_descent(std::size_t first, std::size_t count, double u, double v) const {
+  // The leaves of a ptex face are its 4^m faces m levels down, in the
+  // builder's depth-first order of children: walk down, taking at each
+  // level the child the point lies in (or is nearest, on a shared edge).
+  Frame frame;
+  std::size_t index = first;
+  for (std::size_t below = count / 4; below >= 1; below /= 4) {
+    int best = 0;
+    Frame best_frame;
+    double best_outside = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 4; ++k) {
+      const Frame child = triangles_ ? detail::triangle_child_frame(frame, k) : detail::quad_child_frame(frame, k);
+      const double outside =
+          detail::distance_outside(detail::to_patch(child, detail::inverse_of(child), u, v), triangles_);
+      if (outside < best_outside) {
+        best = k;
+        best_frame = child;
+        best_outside = outside;
+      }
+    }
+    index += static_cast<std::size_t>(best) * below;
+    frame = best_frame;
+  }
+  return index;
+}
+
+LimitPoint LimitEvaluator::evaluate_interpolant(const Leaf& leaf, double s, double t) const {
+  const Index* corner = control_.data() + leaf.first_control;
+  const auto p = [&](int k) { return positions_[static_cast<std::size_t>(corner[k])]; };
+  const auto n = [&](int k) { return normals_[static_cast<std::size_t>(corner[k])]; };
+  LimitPoint out;
+  Vec3 normal;
+  if (triangles_) {  // linear: corners at (0, 0), (1, 0), (0, 1)
+    const double w[3] = {1.0 - s - t, s, t};
+    for (int k = 0; k < 3; ++k) {
+      out.position += w[k] * p(k);
+      normal += w[k] * n(k);
+    }
+    out.du = p(1) - p(0);
+    out.dv = p(2) - p(0);
+  } else {  // bilinear: corners at (0, 0), (1, 0), (1, 1), (0, 1)
+    const double w[4] = {(1.0 - s) * (1.0 - t), s * (1.0 - t), s * t, (1.0 - s) * t};
+    for (int k = 0; k < 4; ++k) {
+      out.position += w[k] * p(k);
+      normal += w[k] * n(k);
+    }
+    out.du = (1.0 - t) * (p(1) - p(0)) + t * (p(2) - p(3));
+    out.dv = (1.0 - s) * (p(3) - p(0)) + s * (p(2) - p(1));
+    out.duv = p(0) - p(1) + p(2) - p(3);
+  }
+  // The corners' limit normals interpolated; where one is missing (a
+  // crease between sides) or they cancel, to_ptex() takes du x dv.
+  bool all = true;
+  for (int k = 0; k < (triangles_ ? 3 : 4); ++k) all = all && !(n(k) == Vec3{});
+  const double length = norm(normal);
+  if (all && length > 1e-3) out.normal = (1.0 / length) * normal;
+  return out;
 }
 
 std::vector<LimitPoint> LimitEvaluator::evaluate(std::span<const SurfaceLocation> at) const {

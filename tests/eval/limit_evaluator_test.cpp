@@ -25,6 +25,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/creasing.h"
 #include "subdiv/refine/hierarchy.h"
+#include "subdiv/rules/limit_mask.h"
 #include "support/refine_options.h"
 #include "support/test_meshes.h"
 
@@ -119,10 +120,6 @@ LevelParameters ptex_parameters(const PolygonMesh& control, const Scheme& s, con
   return {h.finest().mesh, face_ptex};
 }
 
-// The largest difference, relative to the mesh's size, between the
-// evaluator and the closed forms at a dart seen by the checks below.
-double largest_dart_difference = 0.0;
-
 // At every vertex of `levels` refinements, the evaluator equals the
 // vertex's closed-form limit position (to 1e-12 of the mesh's size) and
 // normal (to 1e-9; not on interior creases, where each side has its own).
@@ -148,17 +145,10 @@ void expect_equals_limits_at_dyadic_points(const PolygonMesh& control, const cha
       const double v = ptex.values[2 * static_cast<std::size_t>(value) + 1];
       const LimitPoint p = evaluator.evaluate(level.face_ptex[static_cast<std::size_t>(f)], u, v);
       const auto w = static_cast<std::size_t>(corners[k]);
-      // At a dart the closed forms are OpenSubdiv's smooth masks, not the
-      // limit (its neighbours on the crease follow other rules): skipped,
-      // and measured in DartsEqualTheLimitsAtDyadicPoints.
-      if (creasing.vertex_rule[w] == VertexRule::dart) {
-        largest_dart_difference = std::max(largest_dart_difference, norm(p.position - limits.positions[w]) / size);
-        continue;
-      }
       ASSERT_LE(norm(p.position - limits.positions[w]), 1e-12 * size)
           << "ptex face " << level.face_ptex[static_cast<std::size_t>(f)] << " at (" << u << ", " << v << ")";
       const bool on_crease = topology.vertex_kind(corners[k]) == VertexKind::interior &&
-                             creasing.vertex_rule[w] != VertexRule::smooth;
+                             (creasing.vertex_rule[w] == VertexRule::crease || creasing.vertex_rule[w] == VertexRule::corner);
       if (!on_crease) {
         ASSERT_LE(norm(p.normal - limits.normals[w]), 1e-9)
             << "ptex face " << level.face_ptex[static_cast<std::size_t>(f)] << " at (" << u << ", " << v << ")";
@@ -301,65 +291,137 @@ TEST(LimitEvaluator, LoopBoundariesCreasesAndCornersEqualTheLimitsAtDyadicPoints
 }
 
 // Darts: a crease along part of the equator, ending at the left and right
-// faces' centres (vertices of four edges). Everywhere but at the darts
-// themselves the closed forms are the limit; at the darts the library's
-// closed forms are OpenSubdiv's smooth masks, which the evaluator (A^256 of
-// the dart's own subdivision matrix) differs from: reported, and checked
-// to stay a small fraction of the mesh (it is an approximation, not a
-// different surface).
+// faces' centres (vertices of four edges). The limit at a dart is its own
+// matrix's (limit_positions takes its eigenvectors, the evaluator A^256 of
+// the face ring's matrix): both equal there, normals included.
 TEST(LimitEvaluator, DartsEqualTheLimitsAtDyadicPoints) {
   const PolygonMesh darts = split_cube_with_creases([](Vec3 p, Vec3 q) { return p.z == 0.5 && q.z == 0.5 && p.y < 1 && q.y < 1; });
   ASSERT_EQ(darts.tags.creases.size(), 4u);
   for (const char* name : {"catmull-clark", "loop"}) {
-    largest_dart_difference = 0.0;
     const bool loop = std::string(name) == "loop";
     expect_equals_limits_at_dyadic_points(test::jittered(loop ? triangulated(darts) : darts, 51), name, 4);
-    std::cout << "[ darts    ] " << name << ": the smooth limit masks at a dart are " << largest_dart_difference
-              << " of the mesh's size from the limit\n";
-    EXPECT_GT(largest_dart_difference, 0.0);
-    EXPECT_LT(largest_dart_difference, 1e-2);
   }
+}
+
+// Close to a dart, inside each face around it, the evaluator's normal goes
+// to the normal of the dart's tangent masks (its matrix's subdominant left
+// eigenvectors), from every face: the dart is tangent plane continuous.
+TEST(LimitEvaluator, NearDartsNormalsApproachTheDartMasks) {
+  const PolygonMesh darts = test::jittered(
+      split_cube_with_creases([](Vec3 p, Vec3 q) { return p.z == 0.5 && q.z == 0.5 && p.y < 1 && q.y < 1; }), 57);
+  for (const char* name : {"catmull-clark", "loop"}) {
+    SCOPED_TRACE(name);
+    const Scheme& s = scheme(name);
+    const PolygonMesh control = std::string(name) == "loop" ? triangulated(darts) : darts;
+    const LimitEvaluator evaluator(control, s);
+    const LimitResult limits = limit_positions(control, s);
+    const MeshTopology t(control);
+    const LevelCreasing c = compute_creasing(control, t, boundary_of(control, {}), crease_method_of(control, {}));
+    int checked = 0;
+    for (Index f = 0; f < control.face_count(); ++f) {
+      const auto face = control.face(f);
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        const auto w = static_cast<std::size_t>(face[k]);
+        if (c.vertex_rule[w] != VertexRule::dart) continue;
+        // The ptex corner at the dart, and the directions into the face.
+        const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        const double triangle[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+        const double* at = face.size() == 4 ? corner[k] : triangle[k];
+        // Toward a point inside the face, 2^-level of the way from the dart.
+        const double inside[2] = {face.size() == 4 ? 0.4 : 0.3, face.size() == 4 ? 0.3 : 0.2};
+        for (const int level : {30, 100}) {
+          const double h = std::ldexp(1.0, -level);
+          const double u = at[0] + h * (inside[0] - at[0]), v = at[1] + h * (inside[1] - at[1]);
+          const LimitPoint p = evaluator.evaluate(evaluator.ptex_face_of(f), u, v);
+          if (level == 100) {
+            EXPECT_LT(norm(p.position - limits.positions[w]), 1e-12 * diagonal(control));
+          }
+          EXPECT_LT(norm(p.normal - limits.normals[w]), level == 30 ? 1e-3 : 1e-9)
+              << "face " << f << " corner " << k << " at 2^-" << level;
+          ++checked;
+        }
+      }
+    }
+    EXPECT_GT(checked, 8);
+  }
+}
+
+// The smooth limit masks (OpenSubdiv's at darts) applied at a dart vertex
+// of `mesh`: its limit had its sharp edge been smooth.
+Vec3 smooth_masks_at(const PolygonMesh& mesh, const MeshTopology& t, const Scheme& s, Index v) {
+  VertexNeighbourhood n;
+  n.edges = static_cast<int>(t.vertex_edges(v).size());
+  n.faces = static_cast<int>(t.vertex_corners(v).size());
+  n.rule = VertexRule::smooth;
+  LimitMasks masks;
+  if (!s.limit_masks(n, masks)) throw std::runtime_error("no smooth masks");
+  Vec3 sum = masks.position.vertex * mesh.positions[static_cast<std::size_t>(v)];
+  for (std::size_t i = 0; i < masks.position.edges.size(); ++i)
+    sum += masks.position.edges[i] * mesh.positions[static_cast<std::size_t>(t.other_vertex(t.vertex_edges(v)[i], v))];
+  for (std::size_t j = 0; j < masks.position.faces.size(); ++j)
+    sum += masks.position.faces[j] *
+           mesh.positions[static_cast<std::size_t>(t.corner_vertex(t.corner_next(t.corner_next(t.vertex_corners(v)[j]))))];
+  return sum;
 }
 
 // An independent route to the limit at a dart: the smooth masks applied
 // after L levels of refinement err less and less as L grows, and converge
-// to the evaluator's value.
+// to the evaluator's value, which limit_positions() gives at every level.
 TEST(LimitEvaluator, AtDartsDeeperRefinementConvergesToTheEvaluator) {
   const PolygonMesh darts = test::jittered(
       split_cube_with_creases([](Vec3 p, Vec3 q) { return p.z == 0.5 && q.z == 0.5 && p.y < 1 && q.y < 1; }), 53);
-  const Scheme& s = scheme("catmull-clark");
-  const LimitEvaluator evaluator(darts, s);
-  // Every dart's limit, from the evaluator: the corners of the ptex faces (the
-  // coarse quads) at dart vertices.
-  const MeshTopology t(darts);
-  const LevelCreasing c = compute_creasing(darts, t, boundary_of(darts, {}), crease_method_of(darts, {}));
-  std::vector<Vec3> exact;
-  constexpr double kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  for (Index f = 0; f < darts.face_count(); ++f)
-    for (int k = 0; k < 4; ++k)
-      if (c.vertex_rule[static_cast<std::size_t>(darts.face(f)[static_cast<std::size_t>(k)])] == VertexRule::dart)
-        exact.push_back(evaluator.evaluate(evaluator.ptex_face_of(f), kCorner[k][0], kCorner[k][1]).position);
-  ASSERT_FALSE(exact.empty());
-  std::vector<double> error;
-  for (int levels = 0; levels <= 4; ++levels) {
-    const PolygonMesh refined = refine(darts, s, test::levels(levels));
-    const MeshTopology rt(refined);
-    const LevelCreasing rc = compute_creasing(refined, rt, boundary_of(refined, {}), crease_method_of(refined, {}));
-    const LimitResult limits = limit_positions(refined, s);
-    double worst = 0.0;
-    for (Index v = 0; v < rt.vertex_count(); ++v) {
-      if (rc.vertex_rule[static_cast<std::size_t>(v)] != VertexRule::dart) continue;
-      double nearest = std::numeric_limits<double>::infinity();
-      for (const Vec3& e : exact) nearest = std::min(nearest, norm(limits.positions[static_cast<std::size_t>(v)] - e));
-      worst = std::max(worst, nearest);
+  for (const char* name : {"catmull-clark", "loop"}) {
+    SCOPED_TRACE(name);
+    const Scheme& s = scheme(name);
+    const PolygonMesh control = std::string(name) == "loop" ? triangulated(darts) : darts;
+    const LimitEvaluator evaluator(control, s);
+    // Every dart's limit, from the evaluator: the corners of the ptex faces
+    // (the control faces) at dart vertices.
+    const MeshTopology t(control);
+    const LevelCreasing c = compute_creasing(control, t, boundary_of(control, {}), crease_method_of(control, {}));
+    std::vector<Vec3> exact;
+    constexpr double kQuadCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    constexpr double kTriangleCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    for (Index f = 0; f < control.face_count(); ++f) {
+      const auto face = control.face(f);
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        if (c.vertex_rule[static_cast<std::size_t>(face[k])] != VertexRule::dart) continue;
+        const double* at = face.size() == 4 ? kQuadCorner[k] : kTriangleCorner[k];
+        exact.push_back(evaluator.evaluate(evaluator.ptex_face_of(f), at[0], at[1]).position);
+      }
     }
-    error.push_back(worst);
+    ASSERT_FALSE(exact.empty());
+    const double size = diagonal(control);
+    const auto nearest = [&](Vec3 p) {
+      double d = std::numeric_limits<double>::infinity();
+      for (const Vec3& e : exact) d = std::min(d, norm(p - e));
+      return d;
+    };
+    std::vector<double> error;
+    for (int levels = 0; levels <= 4; ++levels) {
+      const PolygonMesh refined = refine(control, s, test::levels(levels));
+      const MeshTopology rt(refined);
+      const LevelCreasing rc = compute_creasing(refined, rt, boundary_of(refined, {}), crease_method_of(refined, {}));
+      const LimitResult limits = limit_positions(refined, s);
+      double worst = 0.0;
+      int seen = 0;
+      for (Index v = 0; v < rt.vertex_count(); ++v) {
+        if (rc.vertex_rule[static_cast<std::size_t>(v)] != VertexRule::dart) continue;
+        ++seen;
+        EXPECT_EQ(limits.sources[static_cast<std::size_t>(v)], LimitSource::generic);
+        EXPECT_LE(nearest(limits.positions[static_cast<std::size_t>(v)]), 1e-12 * size) << "level " << levels;
+        worst = std::max(worst, nearest(smooth_masks_at(refined, rt, s, v)));
+      }
+      EXPECT_EQ(seen, 2);
+      error.push_back(worst);
+    }
+    std::cout << "[ darts    ] " << name << ": smooth masks after 0..4 levels, distance from the dart limits:";
+    for (const double e : error) std::cout << " " << e;
+    std::cout << "\n";
+    for (std::size_t l = 1; l < error.size(); ++l) EXPECT_LT(error[l], 0.7 * error[l - 1]) << "level " << l;
+    EXPECT_GT(error.front(), 1e-4 * size);  // the smooth masks are not the dart's limit
+    EXPECT_LT(error.back(), error.front() / 10);
   }
-  std::cout << "[ darts    ] smooth masks after 0..4 levels, distance from the evaluator's dart limits:";
-  for (const double e : error) std::cout << " " << e;
-  std::cout << "\n";
-  for (std::size_t l = 1; l < error.size(); ++l) EXPECT_LT(error[l], 0.7 * error[l - 1]) << "level " << l;
-  EXPECT_LT(error.back(), error.front() / 10);
 }
 
 // Semi-sharp creases and corners: isolated until they have decayed.

@@ -1,5 +1,5 @@
 // subdiv eval IN -s SCHEME --at POINTS.txt [--derivatives] [-o OUT.txt]: the
-// exact limit surface at each "face u v" line (ptex faces), as
+// limit surface at each "face u v" line (ptex faces), as
 // "x y z nx ny nz" lines (then du and dv with --derivatives).
 
 #include <cmath>
@@ -27,6 +27,7 @@ struct EvalCommandOptions {
   std::string output;
   bool derivatives = false;
   RefinementOptionValues refinement;
+  EvaluationChoice evaluation;
   ReportOptionValues report;
 };
 
@@ -43,7 +44,7 @@ int run_eval(const EvalCommandOptions& opt) {
     check_not_an_input(opt.at, opt.output);
   }
   PhaseClock clock;
-  const LimitSurface surface = limit_surface_of(opt.input, opt.read, opt.refinement);
+  const LimitSurface surface = limit_surface_of(opt.input, opt.read, opt.refinement, opt.evaluation);
   const LimitEvaluator& evaluator = surface.evaluator;
   clock.lap("prepare");
   const auto rows = read_number_triples(opt.at, "face u v");
@@ -86,6 +87,8 @@ int run_eval(const EvalCommandOptions& opt) {
                 {"ptex_faces", evaluator.ptex_face_count()},
                 {"patches", evaluator.patch_count()},
                 {"isolation_levels", evaluator.isolation_levels()},
+                {"exact", evaluator.exact()},
+                {"measured_change", evaluator.measured_change()},
                 {"seconds", clock.json()}});
     return kExitOk;
   }
@@ -101,20 +104,23 @@ int run_eval(const EvalCommandOptions& opt) {
 
 Command add_eval_command(CLI::App& app) {
   auto opt = std::make_shared<EvalCommandOptions>();
-  CLI::App* cmd = app.add_subcommand("eval", "Evaluate the exact limit surface at given parameters");
+  CLI::App* cmd = app.add_subcommand("eval", "Evaluate the limit surface at given parameters");
   add_read_options(cmd, opt->read);
   cmd->add_option("input", opt->input, "Mesh (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("--at", opt->at, "Text file of 'face u v' lines (ptex faces; '#' starts a comment line)")
       ->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the results (default: standard output)");
   cmd->add_flag("--derivatives", opt->derivatives, "Also write du and dv on each line");
-  add_refinement_options(*cmd, opt->refinement, "Scheme: catmull-clark or loop");
+  add_refinement_options(*cmd, opt->refinement,
+                         "Scheme: catmull-clark or loop (exact); other quad and triangle split schemes by refinement");
+  add_evaluation_options(*cmd, opt->evaluation);
   add_report_options(*cmd, opt->report, "Print the time of each phase (on standard error)");
   cmd->footer(
       "Each output line is 'x y z nx ny nz' (then 'dux duy duz dvx dvy dvz' with --derivatives).\n"
       "Faces are ptex faces: a quad (Catmull-Clark) or triangle (Loop) is one, u, v in [0, 1]\n"
       "(triangles: u + v <= 1); a Catmull-Clark n-gon is n, one per corner (docs/evaluation.md).\n"
-      "Exact for closed meshes without creases; boundaries and tags are refused for now.\n"
+      "Exact for catmull-clark and loop (docs/evaluation.md lists the configurations); elsewhere the\n"
+      "surface is approximated by refinement to --accuracy, with a warning (--exact refuses instead).\n"
       "Example:\n"
       "  printf '0 0.5 0.5\\n3 0.25 0.75\\n' > /tmp/at.txt\n"
       "  subdiv eval data/meshes/cube.obj -s catmull-clark --at /tmp/at.txt --derivatives");

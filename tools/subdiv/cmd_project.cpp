@@ -1,5 +1,5 @@
 // subdiv project IN -s SCHEME --points P.txt [-o OUT.txt]: the nearest point
-// of the exact limit surface to each "x y z" line, as "face u v x y z
+// of the limit surface to each "x y z" line, as "face u v x y z
 // distance" lines.
 
 #include <cstdio>
@@ -26,6 +26,7 @@ struct ProjectCommandOptions {
   std::string output;
   int samples = 8;
   RefinementOptionValues refinement;
+  EvaluationChoice evaluation;
   ReportOptionValues report;
 };
 
@@ -35,7 +36,7 @@ int run_project(const ProjectCommandOptions& opt) {
     check_not_an_input(opt.points, opt.output);
   }
   PhaseClock clock;
-  const LimitSurface surface = limit_surface_of(opt.input, opt.read, opt.refinement);
+  const LimitSurface surface = limit_surface_of(opt.input, opt.read, opt.refinement, opt.evaluation);
   std::vector<Vec3> points;
   for (const auto& row : read_number_triples(opt.points, "x y z")) points.push_back({row[0], row[1], row[2]});
   clock.lap("prepare");
@@ -71,7 +72,7 @@ int run_project(const ProjectCommandOptions& opt) {
 
 Command add_project_command(CLI::App& app) {
   auto opt = std::make_shared<ProjectCommandOptions>();
-  CLI::App* cmd = app.add_subcommand("project", "Find the nearest points of the exact limit surface");
+  CLI::App* cmd = app.add_subcommand("project", "Find the nearest points of the limit surface");
   add_read_options(cmd, opt->read);
   cmd->add_option("input", opt->input, "Mesh (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("--points", opt->points, "Text file of 'x y z' lines ('#' starts a comment line)")->required();
@@ -81,7 +82,9 @@ Command add_project_command(CLI::App& app) {
                   "features)")
       ->capture_default_str()
       ->check(CLI::Range(2, 64));
-  add_refinement_options(*cmd, opt->refinement, "Scheme: catmull-clark or loop");
+  add_refinement_options(*cmd, opt->refinement,
+                         "Scheme: catmull-clark or loop (exact); other quad and triangle split schemes by refinement");
+  add_evaluation_options(*cmd, opt->evaluation);
   add_report_options(*cmd, opt->report, "Print the time of each phase (on standard error)");
   cmd->footer(
       "Each output line is 'face u v x y z distance' (ptex face, see 'subdiv eval --help').\n"

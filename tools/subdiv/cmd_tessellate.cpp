@@ -1,5 +1,5 @@
 // subdiv tessellate IN -s SCHEME --rate N -o OUT: a watertight uniform
-// tessellation of the exact limit surface, with limit normals.
+// tessellation of the limit surface, with limit normals.
 
 #include <cstdio>
 #include <memory>
@@ -24,6 +24,7 @@ struct TessellateCommandOptions {
   int rate = 8;
   bool ascii = false;
   RefinementOptionValues refinement;
+  EvaluationChoice evaluation;
   ReportOptionValues report;
 };
 
@@ -31,7 +32,7 @@ int run_tessellate(const TessellateCommandOptions& opt) {
   check_output_path(opt.input, opt.output);
   check_ascii_applies(opt.ascii, opt.output);
   PhaseClock clock;
-  const LimitSurface surface = limit_surface_of(opt.input, opt.read, opt.refinement);
+  const LimitSurface surface = limit_surface_of(opt.input, opt.read, opt.refinement, opt.evaluation);
   clock.lap("prepare");
   const PolygonMesh out = tessellate(surface.mesh, surface.evaluator, opt.rate);
   clock.lap("evaluate");
@@ -62,7 +63,7 @@ int run_tessellate(const TessellateCommandOptions& opt) {
 
 Command add_tessellate_command(CLI::App& app) {
   auto opt = std::make_shared<TessellateCommandOptions>();
-  CLI::App* cmd = app.add_subcommand("tessellate", "Tessellate the exact limit surface uniformly");
+  CLI::App* cmd = app.add_subcommand("tessellate", "Tessellate the limit surface uniformly");
   add_read_options(cmd, opt->read);
   cmd->add_option("input", opt->input, "Mesh (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   cmd->add_option("-o,--output", opt->output, "Where to write the tessellation (format from the extension)")
@@ -72,12 +73,15 @@ Command add_tessellate_command(CLI::App& app) {
                   "take half each)")
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
-  add_refinement_options(*cmd, opt->refinement, "Scheme: catmull-clark or loop");
+  add_refinement_options(*cmd, opt->refinement,
+                         "Scheme: catmull-clark or loop (exact); other quad and triangle split schemes by refinement");
+  add_evaluation_options(*cmd, opt->evaluation);
   add_report_options(*cmd, opt->report, "Print the time of each phase");
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY or STL output instead of binary");
   cmd->footer(
       "Points on shared edges are made once, so the result is watertight (closed stays closed).\n"
-      "Exact for closed meshes without creases; boundaries and tags are refused for now.\n"
+      "Exact for catmull-clark and loop (docs/evaluation.md lists the configurations); elsewhere the\n"
+      "surface is approximated by refinement to --accuracy, with a warning (--exact refuses instead).\n"
       "Example:\n"
       "  subdiv tessellate data/meshes/cube.obj -s catmull-clark --rate 16 -o /tmp/cube_limit.obj");
   return [opt] { return run_tessellate(*opt); };

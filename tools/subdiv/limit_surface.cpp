@@ -1,5 +1,6 @@
 #include "limit_surface.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -12,7 +13,33 @@
 
 namespace subdiv::cli {
 
-LimitSurface limit_surface_of(const std::string& input, const ReadOptions& read, const RefinementOptionValues& values) {
+void add_evaluation_options(CLI::App& command, EvaluationChoice& choice) {
+  command
+      .add_option("--accuracy", choice.accuracy,
+                  "Where exact evaluation does not apply: refine until the limit moves less than this from the "
+                  "previous level's interpolant (default: 1e-4 of the bounding-box diagonal)")
+      ->check(CLI::PositiveNumber);
+  command.add_flag("--exact", choice.exact, "Refuse where exact evaluation does not apply, instead of approximating");
+}
+
+namespace {
+
+double bounding_box_diagonal(const std::vector<Vec3>& points) {
+  if (points.empty()) return 0.0;
+  Vec3 low = points.front(), high = points.front();
+  for (const Vec3& p : points) {
+    for (int a = 0; a < 3; ++a) {
+      low[a] = std::min(low[a], p[a]);
+      high[a] = std::max(high[a], p[a]);
+    }
+  }
+  return norm(high - low);
+}
+
+}  // namespace
+
+LimitSurface limit_surface_of(const std::string& input, const ReadOptions& read, const RefinementOptionValues& values,
+                              const EvaluationChoice& choice) {
   const Scheme scheme = chosen_scheme(values);
   MeshFile file = read_mesh(input, read);
   print_warnings(input, file.warnings);
@@ -20,7 +47,21 @@ LimitSurface limit_surface_of(const std::string& input, const ReadOptions& read,
   apply_refinement_options(values, scheme, file, options);
   check_refinable(file.mesh, scheme, options, &file.lines);
   try {
-    LimitEvaluator evaluator(file.mesh, scheme, options);
+    const auto reason = LimitEvaluator::exact_evaluation_unavailable(file.mesh, scheme, options);
+    if (!reason || choice.exact) {
+      LimitEvaluator evaluator(file.mesh, scheme, options);
+      return {std::move(file.mesh), std::move(evaluator)};
+    }
+    double accuracy = choice.accuracy;
+    if (accuracy == 0.0) accuracy = 1e-4 * bounding_box_diagonal(file.mesh.positions);
+    if (!(accuracy > 0.0)) accuracy = 1e-12;  // a mesh of one point
+    LimitEvaluator evaluator = LimitEvaluator::by_refinement(file.mesh, scheme, accuracy, options);
+    warnf("subdiv: warning: %s: approximate evaluation (%s): refined %d levels, the limit moved at most %.3g from "
+          "the previous level's interpolant (accuracy %.3g)%s\n",
+          input.c_str(), reason->c_str(), evaluator.isolation_levels(), evaluator.measured_change(), accuracy,
+          evaluator.unresolved_vertices() > 0
+              ? (", " + std::to_string(evaluator.unresolved_vertices()) + " vertices without a limit mask").c_str()
+              : "");
     return {std::move(file.mesh), std::move(evaluator)};
   } catch (const InvalidInputError& e) {
     throw InvalidInputError(input + ": " + e.what());

@@ -6,11 +6,23 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "read_options.h"
 #include "refinement_options.h"
 #include "subdiv/eval/limit_evaluator.h"
 
 namespace subdiv::cli {
+
+/// How the evaluator is chosen: exact where it applies, else by refinement
+/// to an accuracy (or refused, with --exact).
+struct EvaluationChoice {
+  double accuracy = 0.0;  ///< approximate evaluation's accuracy; 0: 1e-4 of the bounding-box diagonal
+  bool exact = false;     ///< refuse rather than approximate
+};
+
+/// Adds --accuracy and --exact to a command.
+void add_evaluation_options(CLI::App& command, EvaluationChoice& choice);
 
 /// A control mesh as the options leave it, and its limit surface's evaluator.
 struct LimitSurface {
@@ -19,9 +31,12 @@ struct LimitSurface {
 };
 
 /// Reads `input`, applies the refinement options (--triangulate, --crease)
-/// and prepares the exact evaluator of its limit surface under the -s
-/// scheme; an error names the file.
-LimitSurface limit_surface_of(const std::string& input, const ReadOptions& read, const RefinementOptionValues& values);
+/// and prepares the evaluator of its limit surface under the -s scheme: the
+/// exact one where it applies, else (unless `choice.exact`) evaluation by
+/// refinement, with a warning that says why and what was measured; an error
+/// names the file.
+LimitSurface limit_surface_of(const std::string& input, const ReadOptions& read, const RefinementOptionValues& values,
+                              const EvaluationChoice& choice);
 
 /// The lines of a text file of three numbers each (blank lines and lines
 /// starting with '#' skipped). Throws InvalidInputError naming the file and

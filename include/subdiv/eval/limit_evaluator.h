@@ -27,12 +27,26 @@
 /// construction, with the element named: sharper semi-sharp features, hole
 /// tags, interior vertices of valence 2, corner tags where fewer than two
 /// sharp edges meet, non-manifold vertices, coordinates beyond 1e300.
+///
+/// Approximate evaluation (by_refinement()) covers the other schemes of the
+/// quad and triangle splits (bilinear, Kobbelt, linear, the Butterflies,
+/// loop-warren) and Catmull-Clark and Loop meshes outside the exact scope
+/// but for holes, non-manifold vertices and huge coordinates: the mesh is
+/// refined uniformly until the limit points of a level's new vertices lie
+/// within the requested accuracy of the previous level's interpolant (the
+/// piecewise bilinear or linear surface through its vertices' limits), and
+/// the last level's interpolant is evaluated, with the interpolated limit
+/// normals. The accuracy is measured at that level's vertices, not bounded
+/// everywhere (docs/evaluation.md); second derivatives are the
+/// interpolant's (zero but for the bilinear twist).
 
 #include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "subdiv/core/types.h"
@@ -87,6 +101,41 @@ class LimitEvaluator {
   ///   anything outside the scope above, naming the element.
   /// \throws std::bad_alloc if memory runs out.
   LimitEvaluator(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options = {});
+
+  /// Why the exact evaluator would refuse \p mesh under \p scheme for
+  /// reasons approximate evaluation does not share (another scheme, an
+  /// interior vertex of valence 2, sharper semi-sharp features, corner tags
+  /// on fewer than two sharp edges), or nullopt. The refusals both share
+  /// (check_refinable(), holes, non-manifold vertices, huge coordinates)
+  /// are not looked at.
+  /// \param mesh the control mesh.
+  /// \param scheme the scheme.
+  /// \param options the rule choices (creasing).
+  /// \return the reason, naming the element, or nullopt.
+  /// \throws std::bad_alloc if memory runs out.
+  static std::optional<std::string> exact_evaluation_unavailable(const PolygonMesh& mesh, const Scheme& scheme,
+                                                                 const RefineOptions& options = {});
+
+  /// Prepares approximate evaluation by uniform refinement (see the file
+  /// comment): levels are added until the limit points of the newest
+  /// level's vertices lie within \p accuracy of the previous level's
+  /// interpolant at their parameters (measured_change()).
+  /// \param mesh a manifold mesh without hole tags.
+  /// \param scheme a scheme of the quad or triangle split with limit
+  ///   positions (not a composite scheme).
+  /// \param accuracy the largest change accepted, in the mesh's units (> 0).
+  /// \param options rule choices for the refinement (threads included);
+  ///   RefineOptions::levels and start_level are not read.
+  /// \param max_levels the most levels refined.
+  /// \return the evaluator; exact() is false.
+  /// \throws InvalidInputError for another scheme, a mesh outside that
+  ///   scope, an accuracy not positive and finite, or an accuracy not reached
+  ///   within \p max_levels or before a level would exceed 2^22 faces (the
+  ///   message gives the change measured so far).
+  /// \throws ParameterError or ValidationError as check_refinable() does.
+  /// \throws std::bad_alloc if memory runs out.
+  static LimitEvaluator by_refinement(const PolygonMesh& mesh, const Scheme& scheme, double accuracy,
+                                      const RefineOptions& options = {}, int max_levels = 10);
   /// Frees the prepared patches.
   ~LimitEvaluator() noexcept;
   /// Moves the prepared patches.
@@ -110,8 +159,19 @@ class LimitEvaluator {
   /// \return the deepest uniform refinement the isolation took (0: every
   ///   face was a patch already).
   int isolation_levels() const noexcept { return isolation_levels_; }
-  /// \return the number of patches the ptex faces are made of.
+  /// \return the number of patches the ptex faces are made of (approximate
+  ///   evaluation: the faces of the level interpolated).
   std::size_t patch_count() const noexcept { return leaves_.size(); }
+  /// \return whether evaluation is exact (false: by_refinement()).
+  bool exact() const noexcept { return exact_; }
+  /// \return approximate evaluation: the largest distance between the limit
+  ///   points of the interpolated level's new vertices and the previous
+  ///   level's interpolant at their parameters; 0 when exact.
+  double measured_change() const noexcept { return measured_change_; }
+  /// \return approximate evaluation: vertices of the interpolated level
+  ///   whose limit no mask gave (left at their refined position); 0 when
+  ///   exact.
+  Index unresolved_vertices() const noexcept { return unresolved_vertices_; }
 
   /// The limit surface at (u, v) of ptex face \p face.
   /// \param face a ptex face.
@@ -152,15 +212,22 @@ class LimitEvaluator {
   };
   class Builder;
 
+  LimitEvaluator() = default;
   void check_location(Index face, double u, double v) const;
   LimitPoint evaluate_leaf(const Leaf& leaf, double s, double t) const;
+  std::size_t leaf_by_descent(std::size_t first, std::size_t count, double u, double v) const;
+  LimitPoint evaluate_interpolant(const Leaf& leaf, double s, double t) const;
 
   bool triangles_ = false;
+  bool exact_ = true;
+  double measured_change_ = 0.0;
+  Index unresolved_vertices_ = 0;
   int isolation_levels_ = 0;
   std::vector<Index> face_ptex_;    ///< first ptex face per control face, then the count
   std::vector<Index> ptex_leaves_;  ///< first leaf per ptex face, then the count
   std::vector<Leaf> leaves_;
   std::vector<Vec3> positions_;     ///< the kept levels' positions, coarse first
+  std::vector<Vec3> normals_;       ///< approximate evaluation: limit normals, parallel to positions_
   std::vector<Index> control_;      ///< every leaf's control points (into positions_), leaf after leaf
   /// The extraordinary patches' models, by configuration kind, valence or
   /// face count, and place in the sector.
