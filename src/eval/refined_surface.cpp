@@ -99,8 +99,12 @@ RefinedSurface refine_to_accuracy(const PolygonMesh& mesh, const Scheme& scheme,
   RefinedSurface out;
   out.hierarchy = refine_hierarchy(mesh, scheme, one, KeepLevels::all);
   std::vector<Vec3> limits = limits_of(mesh, scheme, options, nullptr);
-  std::optional<double> reached;
-  for (int level = 1; !reached || *reached > accuracy; ++level) {
+  // One level's change can vanish by symmetry (the Butterfly's edge points
+  // on a regular tetrahedron are midpoints, the next level's are not): two
+  // levels in a row must be within the accuracy.
+  std::optional<double> reached, before;
+  const auto done = [&] { return reached && before && std::max(*reached, *before) <= accuracy; };
+  for (int level = 1; !done(); ++level) {
     const PolygonMesh& finest = out.hierarchy.finest().mesh;
     const Index faces = quads ? finest.corner_count() : 4 * finest.face_count();
     const std::string so_far = reached ? " (the change measured at level " + std::to_string(level - 1) + " is " +
@@ -118,11 +122,14 @@ RefinedSurface refine_to_accuracy(const PolygonMesh& mesh, const Scheme& scheme,
     std::vector<Vec3> child_limits = limits_of(out.hierarchy.finest().mesh, scheme, options, &unresolved);
     const HierarchyLevel& parent = out.hierarchy.levels[out.hierarchy.levels.size() - 2];
     const auto measured = change(parent.mesh, limits, *out.hierarchy.finest().map, child_limits, quads);
-    if (measured) reached = measured;
+    if (measured) {
+      before = reached;
+      reached = measured;
+    }
     limits = std::move(child_limits);
     out.unresolved = unresolved;
   }
-  out.measured_change = *reached;
+  out.measured_change = std::max(*reached, *before);
   PolygonMesh& last = out.hierarchy.levels.back().mesh;
   LimitOptions with_normals;
   with_normals.refine = options;

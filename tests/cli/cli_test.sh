@@ -207,12 +207,26 @@ run eval-boundary 0 eval "$work/one_quad.obj" --at "$work/at_quad.txt" && stdout
 run eval-l-shape 0 eval "$meshes/l_shape.obj" --at "$work/at_quad.txt" && [ "$(wc -l <"$work/out")" -eq 2 ] && pass ||
   fail "eval-l-shape: expected 2 lines: $(cat "$work/out")"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\nt crease 2/1/0 1 2 5\n' > "$work/sharp5.obj"
-run eval-semi-sharp 1 eval "$work/sharp5.obj" --at "$work/at_quad.txt" && stderr_one_line eval-semi-sharp &&
+run eval-semi-sharp 1 eval "$work/sharp5.obj" --exact --at "$work/at_quad.txt" && stderr_one_line eval-semi-sharp &&
   stderr_has eval-semi-sharp "sharp5.obj: limit evaluation: edge 1-2 has sharpness 5.000000; exact evaluation isolates semi-sharp features up to sharpness 4"
+# Without --exact: evaluation by refinement, with a warning saying why and what was measured.
+run eval-semi-sharp-approximate 0 eval "$work/sharp5.obj" --at "$work/at_quad.txt" &&
+  stderr_one_line eval-semi-sharp-approximate &&
+  stderr_has eval-semi-sharp-approximate "sharp5.obj: approximate evaluation: edge 1-2 has sharpness 5.000000" &&
+  stderr_has eval-semi-sharp-approximate "the limit moved at most" &&
+  [ "$(wc -l <"$work/out")" -eq 2 ] && pass || fail "eval-semi-sharp-approximate: expected 2 lines: $(cat "$work/out")"
 run eval-into-input 1 eval "$meshes/cube.obj" --at "$work/at.txt" -o "$work/at.txt" && stderr_one_line eval-into-input &&
   stderr_has eval-into-input "output is the input file"
-run eval-scheme 1 eval "$meshes/cube.obj" -s doo-sabin --at "$work/at.txt" && stderr_one_line eval-scheme &&
+run eval-scheme 1 eval "$meshes/cube.obj" -s doo-sabin --exact --at "$work/at.txt" && stderr_one_line eval-scheme &&
   stderr_has eval-scheme "doo-sabin has no exact evaluator"
+run eval-scheme-split 1 eval "$meshes/cube.obj" -s doo-sabin --at "$work/at.txt" && stderr_one_line eval-scheme-split &&
+  stderr_has eval-scheme-split "doo-sabin: evaluation at (face, u, v) needs a split that divides each face into sub-faces"
+run eval-kobbelt 0 eval "$meshes/cube.obj" -s kobbelt --accuracy 0.01 --at "$work/at.txt" --json &&
+  stdout_has eval-kobbelt '"exact": false' && stdout_has eval-kobbelt '"points": 3'
+run tessellate-butterfly 0 tessellate "$meshes/tetrahedron.obj" -s butterfly --rate 4 -o "$work/tetrahedron_b.obj" &&
+  stderr_has tessellate-butterfly "approximate evaluation: butterfly has no exact evaluator" &&
+  run tessellate-butterfly-closed 0 info "$work/tetrahedron_b.obj" &&
+  stdout_has tessellate-butterfly-closed "(boundary 0, non-manifold 0)"
 run tessellate-cube 0 tessellate "$meshes/cube.obj" --rate 4 -o "$work/cube_t.obj" &&
   stdout_has tessellate-cube "wrote $work/cube_t.obj: 98 vertices, 96 faces"
 run tessellate-closed 0 info "$work/cube_t.obj" && stdout_has tessellate-closed "edges           192  (boundary 0, non-manifold 0)"

@@ -32,9 +32,10 @@
 /// quad and triangle splits (bilinear, Kobbelt, linear, the Butterflies,
 /// loop-warren) and Catmull-Clark and Loop meshes outside the exact scope
 /// but for holes, non-manifold vertices and huge coordinates: the mesh is
-/// refined uniformly until the limit points of a level's new vertices lie
-/// within the requested accuracy of the previous level's interpolant (the
-/// piecewise bilinear or linear surface through its vertices' limits), and
+/// refined uniformly until, at two levels in a row, the limit points of the
+/// level's new vertices lie within the requested accuracy of the previous
+/// level's interpolant (the piecewise bilinear or linear surface through its
+/// vertices' limits), and
 /// the last level's interpolant is evaluated, with the interpolated limit
 /// normals. The accuracy is measured at that level's vertices, not bounded
 /// everywhere (docs/evaluation.md); second derivatives are the
@@ -117,9 +118,9 @@ class LimitEvaluator {
                                                                  const RefineOptions& options = {});
 
   /// Prepares approximate evaluation by uniform refinement (see the file
-  /// comment): levels are added until the limit points of the newest
-  /// level's vertices lie within \p accuracy of the previous level's
-  /// interpolant at their parameters (measured_change()).
+  /// comment): levels are added until, at two levels in a row, the limit
+  /// points of the level's new vertices lie within \p accuracy of the
+  /// previous level's interpolant at their parameters (measured_change()).
   /// \param mesh a manifold mesh without hole tags.
   /// \param scheme a scheme of the quad or triangle split with limit
   ///   positions (not a composite scheme).
@@ -165,8 +166,8 @@ class LimitEvaluator {
   /// \return whether evaluation is exact (false: by_refinement()).
   bool exact() const noexcept { return exact_; }
   /// \return approximate evaluation: the largest distance between the limit
-  ///   points of the interpolated level's new vertices and the previous
-  ///   level's interpolant at their parameters; 0 when exact.
+  ///   points of the last two levels' new vertices and the previous level's
+  ///   interpolant at their parameters; 0 when exact.
   double measured_change() const noexcept { return measured_change_; }
   /// \return approximate evaluation: vertices of the interpolated level
   ///   whose limit no mask gave (left at their refined position); 0 when
