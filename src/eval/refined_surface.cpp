@@ -132,6 +132,10 @@ RefinedSurface refine_to_accuracy(const PolygonMesh& mesh, const Scheme& scheme,
   out.measured_change = std::max(*reached, *before);
   PolygonMesh& last = out.hierarchy.levels.back().mesh;
   LimitOptions with_normals;
+  // The generic masks apply once extraordinary vertices are two levels
+  // apart: the levels made count (without it, an interpolating scheme's
+  // last level would be refined twice more, sixteen times its faces).
+  with_normals.isolation_levels = std::max(0, with_normals.isolation_levels - (static_cast<int>(out.hierarchy.levels.size()) - 1));
   with_normals.refine = options;
   with_normals.refine.levels = 0;
   with_normals.refine.on_level = nullptr;

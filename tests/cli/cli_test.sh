@@ -223,7 +223,7 @@ run eval-scheme-split 1 eval "$meshes/cube.obj" -s doo-sabin --at "$work/at.txt"
   stderr_has eval-scheme-split "doo-sabin: evaluation at (face, u, v) needs a split that divides each face into sub-faces"
 run eval-kobbelt 0 eval "$meshes/cube.obj" -s kobbelt --accuracy 0.01 --at "$work/at.txt" --json &&
   stdout_has eval-kobbelt '"exact": false' && stdout_has eval-kobbelt '"points": 3'
-run tessellate-butterfly 0 tessellate "$meshes/tetrahedron.obj" -s butterfly --rate 4 -o "$work/tetrahedron_b.obj" &&
+run tessellate-butterfly 0 tessellate "$meshes/tetrahedron.obj" -s butterfly --accuracy 0.01 --rate 4 -o "$work/tetrahedron_b.obj" &&
   stderr_has tessellate-butterfly "approximate evaluation: butterfly has no exact evaluator" &&
   run tessellate-butterfly-closed 0 info "$work/tetrahedron_b.obj" &&
   stdout_has tessellate-butterfly-closed "(boundary 0, non-manifold 0)"
