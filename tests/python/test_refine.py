@@ -166,7 +166,7 @@ def test_gil_is_released_while_refining():
     worker.start()
     time.sleep(0.01)
     start = time.perf_counter()
-    subdiv.refine(mesh, "catmull-clark", 5, threads=1, regular_grids=False)
+    subdiv.refine(mesh, "catmull-clark", 6, threads=1, regular_grids=False)
     end = time.perf_counter()
     stop.set()
     worker.join()
