@@ -375,7 +375,7 @@ std::optional<std::string> sharp_feature_refusal(const PolygonMesh& mesh, const 
                                                  const RefineOptions& options) {
   const LevelCreasing c = compute_creasing(mesh, t, boundary_of(mesh, options), crease_method_of(mesh, options));
   const auto semi_sharp_refusal = [](const std::string& what, double s) {
-    return what + " has sharpness " + std::to_string(s) + "; exact evaluation isolates semi-sharp features up to "
+    return what + " has sharpness " + std::to_string(s) + "; exact evaluation isolates semi-sharp features up to " +
            "sharpness " + std::to_string(static_cast<int>(kMaxSemiSharpness));
   };
   for (Index e = 0; e < t.edge_count(); ++e) {
@@ -427,7 +427,7 @@ void check_common_scope(const PolygonMesh& mesh, const Scheme& scheme, const Ref
 }  // namespace
 
 std::optional<std::string> LimitEvaluator::exact_evaluation_unavailable(const PolygonMesh& mesh, const Scheme& scheme,
-                                                                         const RefineOptions& options) {
+                                                                        const RefineOptions& options) {
   // The patches model exactly these two schemes' rules.
   const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name);
   if (name != catmull_clark && name != loop)

@@ -80,8 +80,10 @@ std::string number(double x) {
 
 std::optional<std::string> refined_evaluation_unavailable(const Scheme& scheme) {
   if (scheme.split != SplitRule::quad && scheme.split != SplitRule::triangle)
-    return std::string("evaluation at (face, u, v) needs a split that divides each face into sub-faces (the quad or "
-                       "triangle split); the ") + to_string(scheme.split) + " does not";
+    return std::string(
+               "evaluation at (face, u, v) needs a split that divides each face into sub-faces (the quad or "
+               "triangle split); the ") +
+           to_string(scheme.split) + " does not";
   if (const auto reason = limit_unavailable(scheme)) return reason;
   return std::nullopt;
 }
@@ -89,7 +91,8 @@ std::optional<std::string> refined_evaluation_unavailable(const Scheme& scheme) 
 RefinedSurface refine_to_accuracy(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                                   double accuracy, int max_levels) {
   if (!(accuracy > 0.0) || !std::isfinite(accuracy))
-    throw InvalidInputError("approximate evaluation: the accuracy must be positive and finite, not " + number(accuracy));
+    throw InvalidInputError("approximate evaluation: the accuracy must be positive and finite, not " +
+                            number(accuracy));
   if (const auto reason = refined_evaluation_unavailable(scheme))
     throw InvalidInputError("approximate evaluation: " + std::string(scheme.name) + ": " + *reason);
   const bool quads = scheme.split == SplitRule::quad;
@@ -107,9 +110,8 @@ RefinedSurface refine_to_accuracy(const PolygonMesh& mesh, const Scheme& scheme,
   for (int level = 1; !done(); ++level) {
     const PolygonMesh& finest = out.hierarchy.finest().mesh;
     const Index faces = quads ? finest.corner_count() : 4 * finest.face_count();
-    const std::string so_far = reached ? " (the change measured at level " + std::to_string(level - 1) + " is " +
-                                             number(*reached) + ")"
-                                       : "";
+    const std::string so_far =
+        reached ? " (the change measured at level " + std::to_string(level - 1) + " is " + number(*reached) + ")" : "";
     if (level > max_levels)
       throw InvalidInputError("approximate evaluation: accuracy " + number(accuracy) + " not reached within " +
                               std::to_string(max_levels) + " levels" + so_far);
@@ -135,7 +137,8 @@ RefinedSurface refine_to_accuracy(const PolygonMesh& mesh, const Scheme& scheme,
   // The generic masks apply once extraordinary vertices are two levels
   // apart: the levels made count (without it, an interpolating scheme's
   // last level would be refined twice more, sixteen times its faces).
-  with_normals.isolation_levels = std::max(0, with_normals.isolation_levels - (static_cast<int>(out.hierarchy.levels.size()) - 1));
+  const int levels_made = static_cast<int>(out.hierarchy.levels.size()) - 1;
+  with_normals.isolation_levels = std::max(0, with_normals.isolation_levels - levels_made);
   with_normals.refine = options;
   with_normals.refine.levels = 0;
   with_normals.refine.on_level = nullptr;

@@ -147,8 +147,9 @@ void expect_equals_limits_at_dyadic_points(const PolygonMesh& control, const cha
       const auto w = static_cast<std::size_t>(corners[k]);
       ASSERT_LE(norm(p.position - limits.positions[w]), 1e-12 * size)
           << "ptex face " << level.face_ptex[static_cast<std::size_t>(f)] << " at (" << u << ", " << v << ")";
-      const bool on_crease = topology.vertex_kind(corners[k]) == VertexKind::interior &&
-                             (creasing.vertex_rule[w] == VertexRule::crease || creasing.vertex_rule[w] == VertexRule::corner);
+      const bool on_crease =
+          topology.vertex_kind(corners[k]) == VertexKind::interior &&
+          (creasing.vertex_rule[w] == VertexRule::crease || creasing.vertex_rule[w] == VertexRule::corner);
       if (!on_crease) {
         ASSERT_LE(norm(p.normal - limits.normals[w]), 1e-9)
             << "ptex face " << level.face_ptex[static_cast<std::size_t>(f)] << " at (" << u << ", " << v << ")";
@@ -359,8 +360,9 @@ Vec3 smooth_masks_at(const PolygonMesh& mesh, const MeshTopology& t, const Schem
   for (std::size_t i = 0; i < masks.position.edges.size(); ++i)
     sum += masks.position.edges[i] * mesh.positions[static_cast<std::size_t>(t.other_vertex(t.vertex_edges(v)[i], v))];
   for (std::size_t j = 0; j < masks.position.faces.size(); ++j)
-    sum += masks.position.faces[j] *
-           mesh.positions[static_cast<std::size_t>(t.corner_vertex(t.corner_next(t.corner_next(t.vertex_corners(v)[j]))))];
+    sum +=
+        masks.position.faces[j] *
+        mesh.positions[static_cast<std::size_t>(t.corner_vertex(t.corner_next(t.corner_next(t.vertex_corners(v)[j]))))];
   return sum;
 }
 

@@ -89,8 +89,8 @@ double expect_within_accuracy_of_exact(const PolygonMesh& mesh, const char* name
     }
   }
   std::cout << "[ refined  ] " << name << ": " << approximate.isolation_levels() << " levels, measured change "
-            << approximate.measured_change() << ", largest distance from the exact surface " << worst
-            << " (accuracy " << accuracy << "), normals " << worst_normal << "\n";
+            << approximate.measured_change() << ", largest distance from the exact surface " << worst << " (accuracy "
+            << accuracy << "), normals " << worst_normal << "\n";
   EXPECT_LE(worst, accuracy);
   return worst_normal;
 }
@@ -162,7 +162,8 @@ void expect_within_accuracy_of_deeper_vertices(const PolygonMesh& mesh, const ch
     const Index f = g / per_face;
     const auto corners = refined.face(g);
     for (std::size_t k = 0; k < corners.size(); ++k) {
-      const Index value = channel.indices[static_cast<std::size_t>(refined.face_offsets[static_cast<std::size_t>(g)]) + k];
+      const Index value =
+          channel.indices[static_cast<std::size_t>(refined.face_offsets[static_cast<std::size_t>(g)]) + k];
       const double u = channel.values[2 * static_cast<std::size_t>(value)];
       const double v = channel.values[2 * static_cast<std::size_t>(value) + 1];
       const LimitPoint p = evaluator.evaluate(evaluator.ptex_face_of(f), u, v);

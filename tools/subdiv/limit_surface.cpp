@@ -56,12 +56,13 @@ LimitSurface limit_surface_of(const std::string& input, const ReadOptions& read,
     if (accuracy == 0.0) accuracy = 1e-4 * bounding_box_diagonal(file.mesh.positions);
     if (!(accuracy > 0.0)) accuracy = 1e-12;  // a mesh of one point
     LimitEvaluator evaluator = LimitEvaluator::by_refinement(file.mesh, scheme, accuracy, options);
-    warnf("subdiv: warning: %s: approximate evaluation: %s; refined %d levels, the limit moved at most %.3g from "
-          "the previous level's interpolant (accuracy %.3g)%s\n",
-          input.c_str(), reason->c_str(), evaluator.isolation_levels(), evaluator.measured_change(), accuracy,
-          evaluator.unresolved_vertices() > 0
-              ? (", " + std::to_string(evaluator.unresolved_vertices()) + " vertices without a limit mask").c_str()
-              : "");
+    warnf(
+        "subdiv: warning: %s: approximate evaluation: %s; refined %d levels, the limit moved at most %.3g from "
+        "the previous level's interpolant (accuracy %.3g)%s\n",
+        input.c_str(), reason->c_str(), evaluator.isolation_levels(), evaluator.measured_change(), accuracy,
+        evaluator.unresolved_vertices() > 0
+            ? (", " + std::to_string(evaluator.unresolved_vertices()) + " vertices without a limit mask").c_str()
+            : "");
     return {std::move(file.mesh), std::move(evaluator)};
   } catch (const InvalidInputError& e) {
     throw InvalidInputError(input + ": " + e.what());

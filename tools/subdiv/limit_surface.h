@@ -2,11 +2,10 @@
 // What eval, tessellate and project share: the mesh read and its limit
 // evaluator built (errors name the input file), and files of number lines.
 
+#include <CLI/CLI.hpp>
 #include <array>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "read_options.h"
 #include "refinement_options.h"
