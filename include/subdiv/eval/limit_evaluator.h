@@ -35,9 +35,8 @@
 /// refined uniformly until, at two levels in a row, the limit points of the
 /// level's new vertices lie within the requested accuracy of the previous
 /// level's interpolant (the piecewise bilinear or linear surface through its
-/// vertices' limits), and
-/// the last level's interpolant is evaluated, with the interpolated limit
-/// normals. The accuracy is measured at that level's vertices, not bounded
+/// vertices' limits), and the last level's interpolant is evaluated, with
+/// the interpolated limit normals. The accuracy is measured at that level's vertices, not bounded
 /// everywhere (docs/evaluation.md); second derivatives are the
 /// interpolant's (zero but for the bilinear twist).
 
