@@ -146,7 +146,8 @@ constexpr std::array<ChildFrame, 3> kTriangleChildren = {{{{0.5, 0.0}, {0.5, 0.5
 ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, int valence)
     : ExtraordinaryPatch(split, Configuration{Configuration::Kind::interior, valence}, 0) {}
 
-ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position, bool dart)
+ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position, bool dart,
+                                       const Scheme* scheme)
     : split_(split), valence_(configuration.k), configuration_(configuration), position_(position), dart_(dart) {
   if (split != SplitRule::quad && split != SplitRule::triangle) {
     throw InvalidInputError("extraordinary patch: only the quad and triangle splits have one");
@@ -194,7 +195,9 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
   one_step.levels = 1;
   one_step.regular_grids = false;
   one_step.boundary = BoundaryInterpolation::edge_only;
-  const StencilTable table = refine_stencil_table(model.mesh, quads ? catmull_clark_scheme() : loop_scheme(), one_step);
+  const Scheme& rules = scheme ? *scheme : quads ? catmull_clark_scheme() : loop_scheme();
+  if (rules.split != split) throw InvalidInputError("extraordinary patch: " + std::string(rules.name) + " has another split");
+  const StencilTable table = refine_stencil_table(model.mesh, rules, one_step);
   PolygonMesh child_mesh;
   const SplitMap map = split_topology(model.mesh, parent, split, child_mesh);
   carry_tags(model.mesh, parent, map, child_mesh);
@@ -269,7 +272,7 @@ ExtraordinaryPatch::ExtraordinaryPatch(SplitRule split, const Configuration& con
     // down, are the pieces instead.
     RefineOptions two_steps = one_step;
     two_steps.levels = 2;
-    const StencilTable table2 = refine_stencil_table(model.mesh, loop_scheme(), two_steps);
+    const StencilTable table2 = refine_stencil_table(model.mesh, rules, two_steps);
     PolygonMesh grandchild_mesh;
     const SplitMap map2 = split_topology(child_mesh, child, split, grandchild_mesh);
     carry_tags(child_mesh, child, map2, grandchild_mesh);

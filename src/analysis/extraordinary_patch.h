@@ -55,6 +55,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/configuration.h"
 #include "subdiv/refine/creasing.h"
+#include "subdiv/rules/scheme.h"
 #include "subdiv/topology/split.h"
 
 namespace subdiv {
@@ -106,11 +107,14 @@ class ExtraordinaryPatch {
   /// configuration is the (split, valence) model, or with `dart` the model
   /// of a dart: an infinitely sharp crease ending at the centre, F
   /// `position` faces counter-clockwise from the face whose edge leaving
-  /// the centre is the crease.
+  /// the centre is the crease. `scheme` refines the ring mesh: Catmull-Clark
+  /// or Loop by the split when null; loop-warren (Loop's rules but for the
+  /// extraordinary vertex's weight) may be given for the triangle split.
   /// \throws InvalidInputError for a position outside [0, k), a dart that
   ///   is not interior, or as the other constructor.
   /// \throws std::logic_error as the other constructor.
-  ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position, bool dart = false);
+  ExtraordinaryPatch(SplitRule split, const Configuration& configuration, int position, bool dart = false,
+                     const Scheme* scheme = nullptr);
 
   /// \return the split (quad: Catmull-Clark, triangle: Loop).
   SplitRule split() const noexcept { return split_; }

@@ -168,7 +168,7 @@ class LimitEvaluator::Builder {
     auto& slot = out_.patches_[{m.dart ? -1 : static_cast<int>(m.configuration.kind), m.configuration.k, m.position}];
     if (!slot)
       slot = std::make_unique<ExtraordinaryPatch>(out_.triangles_ ? SplitRule::triangle : SplitRule::quad,
-                                                  m.configuration, m.position, m.dart);
+                                                  m.configuration, m.position, m.dart, &scheme_);
     return *slot;
   }
 
@@ -428,10 +428,12 @@ void check_common_scope(const PolygonMesh& mesh, const Scheme& scheme, const Ref
 
 std::optional<std::string> LimitEvaluator::exact_evaluation_unavailable(const PolygonMesh& mesh, const Scheme& scheme,
                                                                         const RefineOptions& options) {
-  // The patches model exactly these two schemes' rules.
+  // The patches model these schemes' rules: regular patches of the bicubic
+  // B-spline and of the box spline (Loop's and loop-warren's regular rules
+  // are the same), models read off their own refinement.
   const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name);
-  if (name != catmull_clark && name != loop)
-    return name + " has no exact evaluator (" + catmull_clark + " and " + loop + " have)";
+  if (name != catmull_clark && name != loop && name != "loop-warren")
+    return name + " has no exact evaluator (" + catmull_clark + ", " + loop + " and loop-warren have)";
   const MeshTopology t(mesh);
   for (Index v = 0; v < t.vertex_count(); ++v)
     if (t.vertex_kind(v) == VertexKind::interior && t.valence(v) < 3)

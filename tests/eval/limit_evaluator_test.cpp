@@ -473,6 +473,18 @@ TEST(LimitEvaluator, LoopEqualsTheLimitsAtDyadicPointsForValences3To12) {
   expect_equals_limits_at_dyadic_points(test::tetrahedron(), "loop", 4);
 }
 
+// loop-warren: Loop's rules but Warren's weight at extraordinary vertices
+// (3 / (8 k), 3/16 at valence 3): its own models, its own closed forms, and
+// a surface that differs from Loop's near extraordinary vertices.
+TEST(LimitEvaluator, LoopWarrenEqualsItsLimitsAtDyadicPoints) {
+  for (const int n : {3, 5, 8}) expect_equals_limits_at_dyadic_points(bipyramid(n, 90u + n), "loop-warren", 3);
+  expect_equals_limits_at_dyadic_points(test::tetrahedron(), "loop-warren", 4);
+  expect_equals_limits_at_dyadic_points(test::jittered(triangulated(test::creased_cube()), 91), "loop-warren", 3);
+  const PolygonMesh mesh = bipyramid(5, 95);
+  const LimitEvaluator warren(mesh, scheme("loop-warren")), loop(mesh, scheme("loop"));
+  EXPECT_GT(norm(warren.evaluate(0, 0.1, 0.1).position - loop.evaluate(0, 0.1, 0.1).position), 1e-6);
+}
+
 TEST(LimitEvaluator, RegularTorusesNeedNoIsolation) {
   const LimitEvaluator quads(grid_test::torus(8), scheme("catmull-clark"));
   EXPECT_EQ(quads.isolation_levels(), 0);

@@ -112,15 +112,15 @@ Command add_eval_command(CLI::App& app) {
   cmd->add_option("-o,--output", opt->output, "Where to write the results (default: standard output)");
   cmd->add_flag("--derivatives", opt->derivatives, "Also write du and dv on each line");
   add_refinement_options(*cmd, opt->refinement,
-                         "Scheme: catmull-clark or loop (exact); other quad and triangle split schemes by refinement");
+                         "Scheme: catmull-clark, loop or loop-warren (exact); other quad and triangle schemes by refinement");
   add_evaluation_options(*cmd, opt->evaluation);
   add_report_options(*cmd, opt->report, "Print the time of each phase (on standard error)");
   cmd->footer(
       "Each output line is 'x y z nx ny nz' (then 'dux duy duz dvx dvy dvz' with --derivatives).\n"
       "Faces are ptex faces: a quad (Catmull-Clark) or triangle (Loop) is one, u, v in [0, 1]\n"
       "(triangles: u + v <= 1); a Catmull-Clark n-gon is n, one per corner (docs/evaluation.md).\n"
-      "Exact for catmull-clark and loop (docs/evaluation.md lists the configurations); elsewhere the\n"
-      "surface is approximated by refinement to --accuracy, with a warning (--exact refuses instead).\n"
+      "Exact for catmull-clark, loop and loop-warren (docs/evaluation.md lists the configurations); elsewhere\n"
+      "the surface is approximated by refinement to --accuracy, with a warning (--exact refuses instead).\n"
       "Example:\n"
       "  printf '0 0.5 0.5\\n3 0.25 0.75\\n' > /tmp/at.txt\n"
       "  subdiv eval data/meshes/cube.obj -s catmull-clark --at /tmp/at.txt --derivatives");

@@ -83,7 +83,7 @@ Command add_project_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(2, 64));
   add_refinement_options(*cmd, opt->refinement,
-                         "Scheme: catmull-clark or loop (exact); other quad and triangle split schemes by refinement");
+                         "Scheme: catmull-clark, loop or loop-warren (exact); other quad and triangle schemes by refinement");
   add_evaluation_options(*cmd, opt->evaluation);
   add_report_options(*cmd, opt->report, "Print the time of each phase (on standard error)");
   cmd->footer(

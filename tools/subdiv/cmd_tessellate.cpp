@@ -74,14 +74,14 @@ Command add_tessellate_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
   add_refinement_options(*cmd, opt->refinement,
-                         "Scheme: catmull-clark or loop (exact); other quad and triangle split schemes by refinement");
+                         "Scheme: catmull-clark, loop or loop-warren (exact); other quad and triangle schemes by refinement");
   add_evaluation_options(*cmd, opt->evaluation);
   add_report_options(*cmd, opt->report, "Print the time of each phase");
   cmd->add_flag("--ascii", opt->ascii, "ASCII PLY or STL output instead of binary");
   cmd->footer(
       "Points on shared edges are made once, so the result is watertight (closed stays closed).\n"
-      "Exact for catmull-clark and loop (docs/evaluation.md lists the configurations); elsewhere the\n"
-      "surface is approximated by refinement to --accuracy, with a warning (--exact refuses instead).\n"
+      "Exact for catmull-clark, loop and loop-warren (docs/evaluation.md lists the configurations); elsewhere\n"
+      "the surface is approximated by refinement to --accuracy, with a warning (--exact refuses instead).\n"
       "Example:\n"
       "  subdiv tessellate data/meshes/cube.obj -s catmull-clark --rate 16 -o /tmp/cube_limit.obj");
   return [opt] { return run_tessellate(*opt); };

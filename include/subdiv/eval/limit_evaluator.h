@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The limit surface of Catmull-Clark and Loop at any parameter, exact:
+/// The limit surface of Catmull-Clark, Loop and loop-warren at any parameter, exact:
 /// regular faces are the bicubic B-spline and the quartic box spline of
 /// their control points (reflected across boundaries and infinitely sharp
 /// creases), and a face with one extraordinary corner (an interior vertex,
@@ -29,8 +29,8 @@
 /// sharp edges meet, non-manifold vertices, coordinates beyond 1e300.
 ///
 /// Approximate evaluation (by_refinement()) covers the other schemes of the
-/// quad and triangle splits (bilinear, Kobbelt, linear, the Butterflies,
-/// loop-warren) and Catmull-Clark and Loop meshes outside the exact scope
+/// quad and triangle splits (bilinear, Kobbelt, linear, the Butterflies)
+/// and Catmull-Clark, Loop and loop-warren meshes outside the exact scope
 /// but for holes, non-manifold vertices and huge coordinates: the mesh is
 /// refined uniformly until, at two levels in a row, the limit points of the
 /// level's new vertices lie within the requested accuracy of the previous
@@ -93,7 +93,7 @@ class LimitEvaluator {
  public:
   /// Prepares the evaluator of \p mesh under \p scheme.
   /// \param mesh a manifold mesh in the scope above (Loop: triangles).
-  /// \param scheme catmull-clark or loop.
+  /// \param scheme catmull-clark, loop or loop-warren.
   /// \param options rule choices for the isolating refinement (threads
   ///   included); RefineOptions::levels and start_level are not read.
   /// \throws InvalidInputError, ParameterError or ValidationError as
