@@ -12,7 +12,9 @@
 ///   limit is the limit of its vertex point. Vertices without a closed form
 ///   there (valence 2, semi-sharp features beyond the caps) take the generic
 ///   masks when their neighbourhood matches a configuration, else keep their
-///   refined position.
+///   refined position. Darts take the left eigenvectors of their own
+///   one-ring matrix (the smooth masks are not their limit: the dart edge's
+///   point follows the crease rule), reported as LimitSource::generic.
 /// - Generic masks, for every scheme: the left eigenvectors of the local
 ///   subdivision matrix (eigenvalue 1: the limit position; the subdominant
 ///   pair: two tangents), computed once per configuration by the analysis
