@@ -431,9 +431,10 @@ std::optional<std::string> LimitEvaluator::exact_evaluation_unavailable(const Po
   // The patches model these schemes' rules: regular patches of the bicubic
   // B-spline and of the box spline (Loop's and loop-warren's regular rules
   // are the same), models read off their own refinement.
-  const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name);
-  if (name != catmull_clark && name != loop && name != "loop-warren")
-    return name + " has no exact evaluator (" + catmull_clark + ", " + loop + " and loop-warren have)";
+  const std::string name(scheme.name), catmull_clark(catmull_clark_scheme().name), loop(loop_scheme().name),
+      loop_warren(loop_warren_scheme().name);
+  if (name != catmull_clark && name != loop && name != loop_warren)
+    return name + " has no exact evaluator (" + catmull_clark + ", " + loop + " and " + loop_warren + " have)";
   const MeshTopology t(mesh);
   for (Index v = 0; v < t.vertex_count(); ++v)
     if (t.vertex_kind(v) == VertexKind::interior && t.valence(v) < 3)
