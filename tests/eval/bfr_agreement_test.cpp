@@ -26,6 +26,7 @@
 #include "subdiv/eval/limit_evaluator.h"
 #include "subdiv/mesh/topology.h"
 #include "support/refine_options.h"
+#include "support/scheme_by_name.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -37,11 +38,7 @@ namespace Sdc = OpenSubdiv::Sdc;
 
 using grid_test::diagonal;
 
-const Scheme& scheme(const char* name) {
-  const Scheme* s = find_scheme(name);
-  if (!s) throw std::runtime_error(std::string("no scheme ") + name);
-  return *s;
-}
+using test::scheme;
 
 std::unique_ptr<Far::TopologyRefiner> base_refiner(const PolygonMesh& mesh, Sdc::SchemeType type) {
   std::vector<int> sizes;

@@ -27,6 +27,7 @@
 #include "subdiv/refine/hierarchy.h"
 #include "subdiv/rules/limit_mask.h"
 #include "support/refine_options.h"
+#include "support/scheme_by_name.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -34,11 +35,7 @@ namespace {
 
 using grid_test::diagonal;
 
-const Scheme& scheme(const char* name) {
-  const Scheme* s = find_scheme(name);
-  if (!s) throw std::runtime_error(std::string("no scheme ") + name);
-  return *s;
-}
+using test::scheme;
 
 // A closed double pyramid over an n-gon: apexes of valence n, the equator's
 // vertices of valence 4; jittered so that no symmetry hides an error.
@@ -291,12 +288,43 @@ TEST(LimitEvaluator, LoopBoundariesCreasesAndCornersEqualTheLimitsAtDyadicPoints
   expect_equals_limits_at_dyadic_points(tetrahedron, "loop", 4);
 }
 
+// The split cube with a crease along part of its equator, ending at the
+// left and right faces' centres (vertices of four edges): two darts.
+PolygonMesh cube_with_darts() {
+  return split_cube_with_creases([](Vec3 p, Vec3 q) { return p.z == 0.5 && q.z == 0.5 && p.y < 1 && q.y < 1; });
+}
+
+// A corner of a control face at a dart: the face, the ptex parameter of
+// the corner, and the dart vertex.
+struct DartCorner {
+  Index face;
+  std::array<double, 2> at;
+  std::size_t vertex;
+};
+
+std::vector<DartCorner> dart_corners(const PolygonMesh& control) {
+  const MeshTopology t(control);
+  const LevelCreasing c = compute_creasing(control, t, boundary_of(control, {}), crease_method_of(control, {}));
+  constexpr std::array<std::array<double, 2>, 4> kQuadCorner = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  constexpr std::array<std::array<double, 2>, 3> kTriangleCorner = {{{0, 0}, {1, 0}, {0, 1}}};
+  std::vector<DartCorner> corners;
+  for (Index f = 0; f < control.face_count(); ++f) {
+    const auto face = control.face(f);
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      const auto w = static_cast<std::size_t>(face[k]);
+      if (c.vertex_rule[w] == VertexRule::dart)
+        corners.push_back({f, face.size() == 4 ? kQuadCorner[k] : kTriangleCorner[k], w});
+    }
+  }
+  return corners;
+}
+
 // Darts: a crease along part of the equator, ending at the left and right
 // faces' centres (vertices of four edges). The limit at a dart is its own
 // matrix's (limit_positions takes its eigenvectors, the evaluator A^256 of
 // the face ring's matrix): both equal there, normals included.
 TEST(LimitEvaluator, DartsEqualTheLimitsAtDyadicPoints) {
-  const PolygonMesh darts = split_cube_with_creases([](Vec3 p, Vec3 q) { return p.z == 0.5 && q.z == 0.5 && p.y < 1 && q.y < 1; });
+  const PolygonMesh darts = cube_with_darts();
   ASSERT_EQ(darts.tags.creases.size(), 4u);
   for (const char* name : {"catmull-clark", "loop"}) {
     const bool loop = std::string(name) == "loop";
@@ -308,39 +336,29 @@ TEST(LimitEvaluator, DartsEqualTheLimitsAtDyadicPoints) {
 // to the normal of the dart's tangent masks (its matrix's subdominant left
 // eigenvectors), from every face: the dart is tangent plane continuous.
 TEST(LimitEvaluator, NearDartsNormalsApproachTheDartMasks) {
-  const PolygonMesh darts = test::jittered(
-      split_cube_with_creases([](Vec3 p, Vec3 q) { return p.z == 0.5 && q.z == 0.5 && p.y < 1 && q.y < 1; }), 57);
+  const PolygonMesh darts = test::jittered(cube_with_darts(), 57);
   for (const char* name : {"catmull-clark", "loop"}) {
     SCOPED_TRACE(name);
     const Scheme& s = scheme(name);
     const PolygonMesh control = std::string(name) == "loop" ? triangulated(darts) : darts;
     const LimitEvaluator evaluator(control, s);
     const LimitResult limits = limit_positions(control, s);
-    const MeshTopology t(control);
-    const LevelCreasing c = compute_creasing(control, t, boundary_of(control, {}), crease_method_of(control, {}));
     int checked = 0;
-    for (Index f = 0; f < control.face_count(); ++f) {
-      const auto face = control.face(f);
-      for (std::size_t k = 0; k < face.size(); ++k) {
-        const auto w = static_cast<std::size_t>(face[k]);
-        if (c.vertex_rule[w] != VertexRule::dart) continue;
-        // The ptex corner at the dart, and the directions into the face.
-        const double corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        const double triangle[3][2] = {{0, 0}, {1, 0}, {0, 1}};
-        const double* at = face.size() == 4 ? corner[k] : triangle[k];
-        // Toward a point inside the face, 2^-level of the way from the dart.
-        const double inside[2] = {face.size() == 4 ? 0.4 : 0.3, face.size() == 4 ? 0.3 : 0.2};
-        for (const int level : {30, 100}) {
-          const double h = std::ldexp(1.0, -level);
-          const double u = at[0] + h * (inside[0] - at[0]), v = at[1] + h * (inside[1] - at[1]);
-          const LimitPoint p = evaluator.evaluate(evaluator.ptex_face_of(f), u, v);
-          if (level == 100) {
-            EXPECT_LT(norm(p.position - limits.positions[w]), 1e-12 * diagonal(control));
-          }
-          EXPECT_LT(norm(p.normal - limits.normals[w]), level == 30 ? 1e-3 : 1e-9)
-              << "face " << f << " corner " << k << " at 2^-" << level;
-          ++checked;
+    for (const DartCorner& corner : dart_corners(control)) {
+      const auto [f, at, w] = corner;
+      // Toward a point inside the face, 2^-level of the way from the dart.
+      const bool quad = control.face(f).size() == 4;
+      const double inside[2] = {quad ? 0.4 : 0.3, quad ? 0.3 : 0.2};
+      for (const int level : {30, 100}) {
+        const double h = std::ldexp(1.0, -level);
+        const double u = at[0] + h * (inside[0] - at[0]), v = at[1] + h * (inside[1] - at[1]);
+        const LimitPoint p = evaluator.evaluate(evaluator.ptex_face_of(f), u, v);
+        if (level == 100) {
+          EXPECT_LT(norm(p.position - limits.positions[w]), 1e-12 * diagonal(control));
         }
+        EXPECT_LT(norm(p.normal - limits.normals[w]), level == 30 ? 1e-3 : 1e-9)
+            << "face " << f << " at (" << at[0] << ", " << at[1] << "), 2^-" << level;
+        ++checked;
       }
     }
     EXPECT_GT(checked, 8);
@@ -370,8 +388,7 @@ Vec3 smooth_masks_at(const PolygonMesh& mesh, const MeshTopology& t, const Schem
 // after L levels of refinement err less and less as L grows, and converge
 // to the evaluator's value, which limit_positions() gives at every level.
 TEST(LimitEvaluator, AtDartsDeeperRefinementConvergesToTheEvaluator) {
-  const PolygonMesh darts = test::jittered(
-      split_cube_with_creases([](Vec3 p, Vec3 q) { return p.z == 0.5 && q.z == 0.5 && p.y < 1 && q.y < 1; }), 53);
+  const PolygonMesh darts = test::jittered(cube_with_darts(), 53);
   for (const char* name : {"catmull-clark", "loop"}) {
     SCOPED_TRACE(name);
     const Scheme& s = scheme(name);
@@ -379,19 +396,9 @@ TEST(LimitEvaluator, AtDartsDeeperRefinementConvergesToTheEvaluator) {
     const LimitEvaluator evaluator(control, s);
     // Every dart's limit, from the evaluator: the corners of the ptex faces
     // (the control faces) at dart vertices.
-    const MeshTopology t(control);
-    const LevelCreasing c = compute_creasing(control, t, boundary_of(control, {}), crease_method_of(control, {}));
     std::vector<Vec3> exact;
-    constexpr double kQuadCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    constexpr double kTriangleCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
-    for (Index f = 0; f < control.face_count(); ++f) {
-      const auto face = control.face(f);
-      for (std::size_t k = 0; k < face.size(); ++k) {
-        if (c.vertex_rule[static_cast<std::size_t>(face[k])] != VertexRule::dart) continue;
-        const double* at = face.size() == 4 ? kQuadCorner[k] : kTriangleCorner[k];
-        exact.push_back(evaluator.evaluate(evaluator.ptex_face_of(f), at[0], at[1]).position);
-      }
-    }
+    for (const DartCorner& corner : dart_corners(control))
+      exact.push_back(evaluator.evaluate(evaluator.ptex_face_of(corner.face), corner.at[0], corner.at[1]).position);
     ASSERT_FALSE(exact.empty());
     const double size = diagonal(control);
     const auto nearest = [&](Vec3 p) {

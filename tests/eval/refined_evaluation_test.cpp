@@ -20,6 +20,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
 #include "support/refine_options.h"
+#include "support/scheme_by_name.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -27,11 +28,7 @@ namespace {
 
 using grid_test::diagonal;
 
-const Scheme& scheme(const char* name) {
-  const Scheme* s = find_scheme(name);
-  if (!s) throw std::runtime_error(std::string("no scheme ") + name);
-  return *s;
-}
+using test::scheme;
 
 // Random parameters of a ptex face (triangles: u + v <= 1).
 std::vector<std::array<double, 2>> parameters(bool triangles, int count, unsigned seed) {

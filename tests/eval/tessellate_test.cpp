@@ -21,6 +21,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/mesh/validation.h"
 #include "support/refine_options.h"
+#include "support/scheme_by_name.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -28,11 +29,7 @@ namespace {
 
 using grid_test::diagonal;
 
-const Scheme& scheme(const char* name) {
-  const Scheme* s = find_scheme(name);
-  if (!s) throw std::runtime_error(std::string("no scheme ") + name);
-  return *s;
-}
+using test::scheme;
 
 // The double pyramid, jittered.
 PolygonMesh bipyramid(int n, unsigned seed) { return test::jittered(test::bipyramid(n), seed); }

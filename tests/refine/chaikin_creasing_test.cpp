@@ -25,6 +25,7 @@
 #include "subdiv/refine/creasing.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/scheme.h"
+#include "support/scheme_by_name.h"
 #include "support/test_meshes.h"
 
 #ifdef SUBDIV_HAVE_OPENSUBDIV
@@ -37,7 +38,7 @@
 namespace subdiv {
 namespace {
 
-const Scheme& scheme(const char* name) { return *find_scheme(name); }
+using test::scheme;
 
 std::vector<double> around(CreaseMethod method, std::vector<double> parent) {
   std::vector<double> child(parent.size());

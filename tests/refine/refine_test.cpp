@@ -12,16 +12,13 @@
 #include "subdiv/mesh/triangulate.h"
 #include "subdiv/mesh/validation.h"
 #include "support/refine_options.h"
+#include "support/scheme_by_name.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
 namespace {
 
-const Scheme& scheme(const char* name) {
-  const Scheme* s = find_scheme(name);
-  if (!s) throw std::runtime_error(std::string("no scheme ") + name);
-  return *s;
-}
+using test::scheme;
 
 using test::levels;
 
