@@ -15,24 +15,34 @@ namespace subdiv::detail {
 
 namespace {
 
-// The most faces a kept level may have: the levels above it add a third,
-// and the limit normals of an interpolating scheme's last level refine it
-// twice more (the generic masks' isolation).
+// The most faces a kept level may have (the levels above it add a third).
 constexpr Index kMaxFaces = Index{1} << 22;
 
-/// The level's limit positions (an interpolating scheme's vertices are on
-/// the limit already), and how many no mask reached.
-std::vector<Vec3> limits_of(const PolygonMesh& level, const Scheme& scheme, const RefineOptions& options,
-                            Index* unresolved) {
-  if (scheme.traits.interpolating) return level.positions;
+/// The options limit_positions() is called with on a level `levels_made`
+/// steps below the control mesh.
+LimitOptions limit_options(const RefineOptions& options, int levels_made, bool normals) {
   LimitOptions limit;
-  limit.normals = false;
+  limit.normals = normals;
+  // The generic masks apply once extraordinary vertices are two levels
+  // apart: the levels made count (else an interpolating scheme's last level
+  // would be refined twice more, sixteen times its faces).
+  limit.isolation_levels = std::max(0, limit.isolation_levels - levels_made);
   limit.refine = options;
   limit.refine.levels = 0;
   limit.refine.on_level = nullptr;
-  LimitResult result = limit_positions(level, scheme, limit);
-  if (unresolved) *unresolved = result.approximated;
-  return std::move(result.positions);
+  return limit;
+}
+
+/// The level's limit positions, with normals where they come with them (an
+/// interpolating scheme's vertices are on the limit already: its normals
+/// are left empty for the last level alone), and how many no mask reached.
+LimitResult limits_of(const PolygonMesh& level, int levels_made, const Scheme& scheme, const RefineOptions& options) {
+  if (scheme.traits.interpolating) {
+    LimitResult result;
+    result.positions = level.positions;
+    return result;
+  }
+  return limit_positions(level, scheme, limit_options(options, levels_made, true));
 }
 
 /// The largest distance between the child's limit points and the parent's
@@ -101,7 +111,7 @@ RefinedSurface refine_to_accuracy(const PolygonMesh& mesh, const Scheme& scheme,
   one.start_level = 0;
   RefinedSurface out;
   out.hierarchy = refine_hierarchy(mesh, scheme, one, KeepLevels::all);
-  std::vector<Vec3> limits = limits_of(mesh, scheme, options, nullptr);
+  LimitResult limits = limits_of(mesh, 0, scheme, options);
   // One level's change can vanish by symmetry (the Butterfly's edge points
   // on a regular tetrahedron are midpoints, the next level's are not): two
   // levels in a row must be within the accuracy.
@@ -120,41 +130,35 @@ RefinedSurface refine_to_accuracy(const PolygonMesh& mesh, const Scheme& scheme,
                               std::to_string(level) + " with " + std::to_string(faces) + " faces, more than " +
                               std::to_string(kMaxFaces) + so_far);
     refine_further(out.hierarchy, scheme, 1, one, KeepLevels::all);
-    Index unresolved = 0;
-    std::vector<Vec3> child_limits = limits_of(out.hierarchy.finest().mesh, scheme, options, &unresolved);
+    LimitResult child = limits_of(out.hierarchy.finest().mesh, level, scheme, options);
     const HierarchyLevel& parent = out.hierarchy.levels[out.hierarchy.levels.size() - 2];
-    const auto measured = change(parent.mesh, limits, *out.hierarchy.finest().map, child_limits, quads);
+    const auto measured =
+        change(parent.mesh, limits.positions, *out.hierarchy.finest().map, child.positions, quads);
     if (measured) {
       before = reached;
       reached = measured;
     }
-    limits = std::move(child_limits);
-    out.unresolved = unresolved;
+    limits = std::move(child);
   }
   out.measured_change = std::max(*reached, *before);
+  out.unresolved = limits.approximated;
   PolygonMesh& last = out.hierarchy.levels.back().mesh;
-  LimitOptions with_normals;
-  // The generic masks apply once extraordinary vertices are two levels
-  // apart: the levels made count (without it, an interpolating scheme's
-  // last level would be refined twice more, sixteen times its faces).
-  const int levels_made = static_cast<int>(out.hierarchy.levels.size()) - 1;
-  with_normals.isolation_levels = std::max(0, with_normals.isolation_levels - levels_made);
-  with_normals.refine = options;
-  with_normals.refine.levels = 0;
-  with_normals.refine.on_level = nullptr;
-  // The normals where the masks give them (positions are in `limits`). An
-  // interior vertex on a crease has a normal per side, and the masks give
+  // An interpolating scheme's normals, from the masks where they apply.
+  if (limits.normals.empty()) {
+    const int levels_made = static_cast<int>(out.hierarchy.levels.size()) - 1;
+    limits.normals = limit_positions(last, scheme, limit_options(options, levels_made, true)).normals;
+  }
+  // An interior vertex on a crease has a normal per side, and the masks give
   // one: none is kept there, and the faces around take their own du x dv.
-  LimitResult result = limit_positions(last, scheme, with_normals);
   const MeshTopology t(last);
   const LevelCreasing creasing = compute_creasing(last, t, boundary_of(last, options), crease_method_of(last, options));
   for (Index v = 0; v < t.vertex_count(); ++v) {
     const VertexRule rule = creasing.vertex_rule[static_cast<std::size_t>(v)];
     if (t.vertex_kind(v) == VertexKind::interior && (rule == VertexRule::crease || rule == VertexRule::corner))
-      result.normals[static_cast<std::size_t>(v)] = Vec3{};
+      limits.normals[static_cast<std::size_t>(v)] = Vec3{};
   }
-  last.positions = std::move(limits);
-  out.normals = std::move(result.normals);
+  last.positions = std::move(limits.positions);
+  out.normals = std::move(limits.normals);
   return out;
 }
 
