@@ -89,6 +89,36 @@ void vertex_point(const LevelView& level, Index v, VertexRule rule, MaskBuilder&
   for (const Index e : t.vertex_edges(v)) mask.add(t.other_vertex(e, v), beta);
 }
 
+// The fast path: smooth edge points between two triangles and smooth vertex
+// points summed straight from positions, without building their masks;
+// false elsewhere (boundaries, sharp and semi-sharp edges, crease and corner
+// vertices), where the engine applies the masks above.
+template <double (*beta_of)(int)>
+bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::span<const Vec3> p,
+                    std::span<const Vec3>, Vec3& out) {
+  const MeshTopology& t = level.topology;
+  auto at = [&](Index v) { return p[static_cast<std::size_t>(v)]; };
+  if (i < map.vertex_points) {
+    const Index e = i - map.edge_points;
+    const auto sides = t.edge_corners(e);
+    if (sides.size() != 2 || level.is_sharp(e)) return false;
+    const auto [a, b] = t.edge_vertices(e);
+    const double shift = detail::piecewise_smooth_shift(level, e, a, b, loop_gamma);
+    const Index c = t.corner_vertex(t.corner_prev(sides[0])), d = t.corner_vertex(t.corner_prev(sides[1]));
+    out = (0.375 + shift) * at(a) + (0.375 - shift) * at(b) + 0.125 * (at(c) + at(d));
+    return true;
+  }
+  const Index v = i - map.vertex_points;
+  if (level.vertex_rule.empty() || level.vertex_rule[static_cast<std::size_t>(v)] != VertexRule::smooth) return false;
+  const auto edges = t.vertex_edges(v);
+  Vec3 ring;
+  for (const Index e : edges) ring += at(t.other_vertex(e, v));
+  const int k = static_cast<int>(edges.size());
+  const double beta = beta_of(k);
+  out = (1.0 - k * beta) * at(v) + beta * ring;
+  return true;
+}
+
 // Closed-form limit masks (triangles: no face weights).
 
 // Interior (smooth, dart): the limit weight chi = 8 beta / (3 + 8 k beta)
@@ -174,7 +204,7 @@ const Scheme& loop_scheme() {
       .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_beta>,
                 .boundary_curve = &cubic_bspline_curve_scheme()},
       .limit_masks = limit_masks<loop_beta>,
-      .fast_path = {.regular_triangle_grid = &kRegularGrid}};
+      .fast_path = {.point = evaluate_point<loop_beta>, .regular_triangle_grid = &kRegularGrid}};
   return scheme;
 }
 
@@ -188,7 +218,7 @@ const Scheme& loop_warren_scheme() {
       .masks = {.edge_point = edge_point, .vertex_point = vertex_point<loop_warren_beta>,
                 .boundary_curve = &cubic_bspline_curve_scheme()},
       .limit_masks = limit_masks<loop_warren_beta>,
-      .fast_path = {.regular_triangle_grid = &kRegularGrid}};
+      .fast_path = {.point = evaluate_point<loop_warren_beta>, .regular_triangle_grid = &kRegularGrid}};
   return scheme;
 }
 
