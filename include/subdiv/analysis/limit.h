@@ -143,7 +143,8 @@ struct LimitResult {
 };
 
 /// Why limit_positions() refuses \p scheme whatever the mesh (composite
-/// schemes, the midedge split), or nothing where it covers it.
+/// schemes other than the quad split's, such as gcc and midpoint of even
+/// degree; the midedge split), or nothing where it covers it.
 /// \param scheme The scheme.
 /// \return The reason, one sentence; nullopt where limit positions exist.
 /// \throws std::bad_alloc if memory runs out.
@@ -154,12 +155,11 @@ std::optional<std::string> limit_unavailable(const Scheme& scheme);
 /// mask keep their refined position and are counted in
 /// LimitResult::approximated.
 /// \param mesh The control mesh.
-/// \param scheme The scheme (not composite, not the midedge split).
+/// \param scheme The scheme (not one limit_unavailable() refuses).
 /// \param options Route, refinement caps, normals, and the refinement rules.
 /// \return One position (and, when asked, normal and tangents) per vertex of
 ///         \p mesh, in its order.
-/// \throws InvalidInputError if \p scheme is a composite scheme or uses the
-///         midedge split, a level or face count in \p options is negative,
+/// \throws InvalidInputError if limit_unavailable() refuses \p scheme, a level or face count in \p options is negative,
 ///         refinement rejects the mesh or the scheme's parameters (as
 ///         refine() does: TopologyError, ValidationError, ParameterError), or
 ///         the analysis cannot read a configuration's matrix.
