@@ -556,15 +556,17 @@ struct WholeLevel {
 }  // namespace
 
 std::optional<std::string> limit_unavailable(const Scheme& scheme) {
-  // A composite scheme of the quad split (gcc and midpoint of odd degree)
-  // keeps its vertices, so the analysis's masks of its whole level apply as
-  // for any primal scheme. Of the dual split (even degrees) its neighbourhoods
-  // span more than one ring of quads around a vertex's V-face, which the dual
-  // route does not read.
+  // A composite scheme of a primal split (gcc and midpoint of odd degree,
+  // composite:Tvv4,...) keeps its vertices, so the analysis's masks of its
+  // whole level apply as for any primal scheme. Of the dual split (even
+  // degrees) its neighbourhoods span more than one ring of quads around a
+  // vertex's V-face, which the dual route does not read; of the sqrt3 split
+  // (Tvv3) its averages read further than the one-ring that the generic
+  // route's sqrt3 match relies on.
   if (scheme.steps && scheme.split == SplitRule::dual)
     return "no limit positions for composite schemes of the dual split (gcc and midpoint of even degree) yet; odd "
            "degrees have them";
-  if (scheme.steps && scheme.split != SplitRule::quad)
+  if (scheme.steps && !is_primal(scheme.split))
     return std::string("no limit positions for composite schemes of the ") + to_string(scheme.split) + " yet";
   const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
   if (!is_primal(scheme.split) && !point_split && scheme.split != SplitRule::dual)

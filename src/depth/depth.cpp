@@ -277,7 +277,9 @@ bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& opti
 
 std::optional<std::string> depth_bound_unavailable(const Scheme& scheme, const DepthOptions& options) {
   if (scheme.fast_path.two_steps) return depth_bound_unavailable(*scheme.fast_path.two_steps, options);
-  if (scheme.steps) return "no depth bound for composite schemes yet: it needs limit positions";
+  if (scheme.steps)
+    return "no depth bound for composite schemes yet: the bounds are derived scheme by scheme (Loop, Catmull-Clark, "
+           "Doo-Sabin), and a composite's levels are not one of those";
   if (scheme.split == SplitRule::dual) return std::nullopt;
   if (!is_primal(scheme.split))
     return std::string("no depth bound for the ") + to_string(scheme.split) +

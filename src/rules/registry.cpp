@@ -8,6 +8,7 @@
 #include "subdiv/rules/bilinear.h"
 #include "subdiv/rules/butterfly.h"
 #include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/composite.h"
 #include "subdiv/rules/doo_sabin.h"
 #include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/generalized_catmull_clark.h"
@@ -65,6 +66,7 @@ std::array<double, 3> boundary_vertex_limit(const Scheme& scheme) {
 const Scheme& default_scheme() { return catmull_clark_scheme(); }
 
 const Scheme* find_scheme(std::string_view name) {
+  if (is_composite_spec(name)) return &composite_scheme(name);
   for (const Scheme* s : all_schemes())
     if (s->name == name) return s;
   return nullptr;

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <variant>
 #include <utility>
 #include <vector>
 
@@ -243,7 +244,7 @@ int run_analyze(const AnalyzeCommandOptions& opt) {
   for (const auto& [path, bytes] : plots) write_file_atomically(path, bytes);
 
   std::string text = opt.json ? analysis_json(scheme->name, results) : format_analysis_table(scheme->name, results);
-  if (scheme->steps) {
+  if (std::holds_alternative<DegreeParameters>(scheme->parameters)) {  // gcc and midpoint: the paper's theorems
     if (opt.json) {
       nlohmann::json doc = nlohmann::json::parse(text);
       doc["chen_prautzsch"] = gcc_report_json(*scheme, results);

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -115,7 +116,16 @@ struct Quasi48Parameters {
 /// (Scheme is a plain value) to refine or analyse another member; the rule
 /// file's check (Scheme::parameter_check) validates them. Masks read them
 /// from the LevelView.
-using SchemeParameters = std::variant<std::monostate, TensionParameters, DegreeParameters, Quasi48Parameters>;
+struct CompositeProgram;
+
+/// A composite scheme written as a sequence of averaging operators
+/// (rules/composite.h): its parsed program, shared by its steps.
+struct CompositeParameters {
+  std::shared_ptr<const CompositeProgram> program;
+};
+
+using SchemeParameters =
+    std::variant<std::monostate, TensionParameters, DegreeParameters, Quasi48Parameters, CompositeParameters>;
 
 /// The tension of a tension family.
 /// \param p a scheme's parameters.
@@ -592,11 +602,13 @@ std::span<const Scheme* const> all_schemes();
 ///   the scheme.
 const Scheme& default_scheme();
 
-/// The registered scheme with this name (Scheme::name, as users type it).
+/// The registered scheme with this name (Scheme::name, as users type it), or
+/// the composite scheme a "composite:..." spec writes (rules/composite.h).
 /// \param name the name, compared exactly.
 /// \return the scheme, or nullptr where none has the name.
 /// \throws std::bad_alloc if memory runs out on the first call, which builds
 ///   the registered schemes.
+/// \throws ParameterError for a composite spec that does not parse.
 const Scheme* find_scheme(std::string_view name);
 
 }  // namespace subdiv
