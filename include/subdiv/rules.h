@@ -5,6 +5,7 @@
 #include "subdiv/rules/bilinear.h"
 #include "subdiv/rules/butterfly.h"
 #include "subdiv/rules/catmull_clark.h"
+#include "subdiv/rules/composite.h"
 #include "subdiv/rules/doo_sabin.h"
 #include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/generalized_catmull_clark.h"

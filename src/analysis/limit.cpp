@@ -556,17 +556,17 @@ struct WholeLevel {
 }  // namespace
 
 std::optional<std::string> limit_unavailable(const Scheme& scheme) {
-  // A composite scheme of a primal split (gcc and midpoint of odd degree,
-  // composite:Tvv4,...) keeps its vertices, so the analysis's masks of its
-  // whole level apply as for any primal scheme. Of the dual split (even
+  // A composite scheme of a primal or the sqrt3 split (gcc and midpoint of
+  // odd degree, composite:Tvv4,... and composite:Tvv3,...) keeps its
+  // vertices, so the analysis's masks of its whole level apply as for any
+  // such scheme (the sqrt3 split's: its averages read only topology and
+  // valences, which the neighbourhood match fixes). Of the dual split (even
   // degrees) its neighbourhoods span more than one ring of quads around a
-  // vertex's V-face, which the dual route does not read; of the sqrt3 split
-  // (Tvv3) its averages read further than the one-ring that the generic
-  // route's sqrt3 match relies on.
+  // vertex's V-face, which the dual route does not read.
   if (scheme.steps && scheme.split == SplitRule::dual)
     return "no limit positions for composite schemes of the dual split (gcc and midpoint of even degree) yet; odd "
            "degrees have them";
-  if (scheme.steps && !is_primal(scheme.split))
+  if (scheme.steps && !is_primal(scheme.split) && scheme.split != SplitRule::sqrt3)
     return std::string("no limit positions for composite schemes of the ") + to_string(scheme.split) + " yet";
   const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
   if (!is_primal(scheme.split) && !point_split && scheme.split != SplitRule::dual)

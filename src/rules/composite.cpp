@@ -421,6 +421,14 @@ const Scheme& composite_loop_scheme() {
   return scheme;
 }
 
+const Scheme& composite_sqrt3_scheme() {
+  static const Scheme scheme =
+      make_scheme(parse("composite:Tvv3,VF,FF,FVc(sqrt3),VF,FF,FVc(sqrt3)"), "composite-sqrt3",
+                  "composite: Tvv3, then two primal/dual cycles VF, FF, FVc(sqrt3); C1 at valences 3..16 (the "
+                  "project's reading of Oswald and Schroeder)");
+  return scheme;
+}
+
 const Scheme& composite_sqrt3_kobbelt_scheme() {
   static const Scheme scheme = make_scheme(parse("composite:Tvv3,VF,FF,FVc(sqrt3)"), "composite-sqrt3-kobbelt",
                                            "composite: Tvv3, VF, FF, FVc(sqrt3); Kobbelt's sqrt3 as averages");

@@ -34,11 +34,12 @@ const char* to_string(VertexRule r) noexcept {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 16> schemes = {
+  static const std::array<const Scheme*, 19> schemes = {
       &catmull_clark_scheme(), &loop_scheme(),     &loop_warren_scheme(), &butterfly_scheme(),
       &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(), &sqrt3_scheme(),
       &interpolatory_sqrt3_scheme(), &kobbelt_scheme(), &four_eight_scheme(), &generalized_catmull_clark_scheme(),
-      &midpoint_scheme(), &bilinear_scheme(), &linear_scheme(), &quasi_4_8_scheme()};
+      &midpoint_scheme(), &bilinear_scheme(), &linear_scheme(), &quasi_4_8_scheme(), &composite_loop_scheme(),
+      &composite_sqrt3_scheme(), &composite_sqrt3_kobbelt_scheme()};
   return schemes;
 }
 

@@ -223,3 +223,14 @@ def test_triangle_subdivision_option():
     assert np.isclose(smooth, expected, rtol=0, atol=1e-14).all(axis=1).any()
     with pytest.raises(subdiv.InvalidInputError, match="triangle_subdivision='round'"):
         subdiv.refine(pyramid, "catmull-clark", 1, triangle_subdivision="round")
+
+
+def test_composite_specs():
+    # A scheme written as averaging operators: Loop's, spelled out.
+    mesh = subdiv.read(MESHES / "tetrahedron.obj")
+    spelled = subdiv.refine(mesh, "composite:Tvv4,VdE,EVc(loop),VdE,EVc(loop)", 3).mesh
+    native = subdiv.refine(mesh, "loop", 3).mesh
+    assert np.array_equal(spelled.faces, native.faces)
+    assert np.abs(spelled.points - native.points).max() < 1e-14
+    with pytest.raises(subdiv.Error, match="ends on edges; it must end on vertices"):
+        subdiv.refine(mesh, "composite:Tvv4,VdE", 1)

@@ -88,9 +88,10 @@ TEST(SchemeParameters, EachFamilyHoldsItsOwn) {
   for (const Scheme* s : all_schemes()) {
     EXPECT_NO_THROW(check_parameters(*s)) << s->name;
     EXPECT_EQ(takes_tension(*s), tension_parameters(s->parameters) != nullptr) << s->name;
-    if (s->steps) {  // composite: a degree (gcc, midpoint) or quasi 4-8's boundary treatment
+    if (s->steps) {  // a degree (gcc, midpoint), quasi 4-8's boundary treatment or averaging operators
       EXPECT_TRUE(degree_parameters(s->parameters) != nullptr ||
-                  std::holds_alternative<Quasi48Parameters>(s->parameters))
+                  std::holds_alternative<Quasi48Parameters>(s->parameters) ||
+                  std::holds_alternative<CompositeParameters>(s->parameters))
           << s->name;
     }
   }

@@ -96,6 +96,16 @@ bool is_composite_spec(std::string_view name) noexcept;
 /// \throws std::bad_alloc if memory runs out on the first call.
 const Scheme& composite_loop_scheme();
 
+/// The registered "composite-sqrt3": Tvv3, then two primal/dual cycles VF,
+/// FF, FVc(sqrt3). The project's reading of Oswald and Schroeder's schemes,
+/// whose sequences are not in the reachable sources: two cycles, and at low
+/// valences Kobbelt's coefficient (plain means fail Reif's condition at
+/// valence 3); the analysis finds it C1 at valences 3..16
+/// (docs/schemes/composite.md).
+/// \return the scheme, a static object valid for the program's lifetime.
+/// \throws std::bad_alloc if memory runs out on the first call.
+const Scheme& composite_sqrt3_scheme();
+
 /// The registered "composite-sqrt3-kobbelt": Tvv3, VF, FF, FVc(sqrt3), which
 /// is Kobbelt's sqrt3 scheme.
 /// \return the scheme, a static object valid for the program's lifetime.
