@@ -9,6 +9,7 @@
 #include "subdiv/rules/doo_sabin.h"
 #include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/generalized_catmull_clark.h"
+#include "subdiv/rules/interpolating_sqrt2.h"
 #include "subdiv/rules/interpolatory_sqrt3.h"
 #include "subdiv/rules/kobbelt.h"
 #include "subdiv/rules/limit_mask.h"

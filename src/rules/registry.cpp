@@ -12,6 +12,7 @@
 #include "subdiv/rules/doo_sabin.h"
 #include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/generalized_catmull_clark.h"
+#include "subdiv/rules/interpolating_sqrt2.h"
 #include "subdiv/rules/interpolatory_sqrt3.h"
 #include "subdiv/rules/kobbelt.h"
 #include "subdiv/rules/linear.h"
@@ -34,12 +35,12 @@ const char* to_string(VertexRule r) noexcept {
 }
 
 std::span<const Scheme* const> all_schemes() {
-  static const std::array<const Scheme*, 19> schemes = {
+  static const std::array<const Scheme*, 20> schemes = {
       &catmull_clark_scheme(), &loop_scheme(),     &loop_warren_scheme(), &butterfly_scheme(),
       &modified_butterfly_scheme(), &doo_sabin_scheme(), &midedge_scheme(), &sqrt3_scheme(),
       &interpolatory_sqrt3_scheme(), &kobbelt_scheme(), &four_eight_scheme(), &generalized_catmull_clark_scheme(),
       &midpoint_scheme(), &bilinear_scheme(), &linear_scheme(), &quasi_4_8_scheme(), &composite_loop_scheme(),
-      &composite_sqrt3_scheme(), &composite_sqrt3_kobbelt_scheme()};
+      &composite_sqrt3_scheme(), &composite_sqrt3_kobbelt_scheme(), &interpolating_sqrt2_scheme()};
   return schemes;
 }
 
