@@ -560,13 +560,10 @@ std::optional<std::string> limit_unavailable(const Scheme& scheme) {
   // odd degree, composite:Tvv4,... and composite:Tvv3,...) keeps its
   // vertices, so the analysis's masks of its whole level apply as for any
   // such scheme (the sqrt3 split's: its averages read only topology and
-  // valences, which the neighbourhood match fixes). Of the dual split (even
-  // degrees) its neighbourhoods span more than one ring of quads around a
-  // vertex's V-face, which the dual route does not read.
-  if (scheme.steps && scheme.split == SplitRule::dual)
-    return "no limit positions for composite schemes of the dual split (gcc and midpoint of even degree) yet; odd "
-           "degrees have them";
-  if (scheme.steps && !is_primal(scheme.split) && scheme.split != SplitRule::sqrt3)
+  // valences, which the neighbourhood match fixes); of the dual split (gcc
+  // and midpoint of even degree), the dual route's, whose neighbourhood walk
+  // reads as many rings as the analysis's matrix spans.
+  if (scheme.steps && !is_primal(scheme.split) && scheme.split != SplitRule::sqrt3 && scheme.split != SplitRule::dual)
     return std::string("no limit positions for composite schemes of the ") + to_string(scheme.split) + " yet";
   const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
   if (!is_primal(scheme.split) && !point_split && scheme.split != SplitRule::dual)
