@@ -205,8 +205,9 @@ Vec3 apply(const Eigen::VectorXd& mask, const std::vector<Index>& vertices, std:
 }  // namespace
 
 LimitResult dual_limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options) {
-  if (scheme.split != SplitRule::dual)
-    throw InvalidInputError(std::string(scheme.name) + ": dual limit positions need a dual-split scheme");
+  const bool midedge = scheme.split == SplitRule::midedge;
+  if (scheme.split != SplitRule::dual && !midedge)
+    throw InvalidInputError(std::string(scheme.name) + ": dual limit positions need a dual or midedge split");
   RefineOptions one = options.refine;
   one.levels = 1;
   one.on_level = nullptr;
@@ -241,8 +242,9 @@ LimitResult dual_limit_positions(const PolygonMesh& mesh, const Scheme& scheme, 
   result.sources.assign(mesh.positions.size(), LimitSource::refined_position);
   if (options.normals) result.normals.assign(mesh.positions.size(), Vec3{});
   // Child faces: [F-faces | E-faces | V-faces of the vertices that have one]
-  // (src/topology/dual_split.cpp).
-  Index v_face = parent.face_count() + parent.edge_count();
+  // (src/topology/dual_split.cpp); the midedge split has no E-faces, and
+  // V-faces at vertices of three or more edges (midedge_split.cpp).
+  Index v_face = parent.face_count() + (midedge ? 0 : parent.edge_count());
   for (Index v = 0; v < parent.vertex_count(); ++v) {
     const auto vi = static_cast<std::size_t>(v);
     const auto faces = static_cast<int>(parent.vertex_face_count(v));
@@ -264,7 +266,7 @@ LimitResult dual_limit_positions(const PolygonMesh& mesh, const Scheme& scheme, 
       result.sources[vi] = LimitSource::closed_form;
       continue;
     }
-    if (!dual_split_has_v_face(parent, v)) {
+    if (midedge ? parent.vertex_edges(v).size() < 3 : !dual_split_has_v_face(parent, v)) {
       ++result.approximated;
       continue;
     }

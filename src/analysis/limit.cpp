@@ -566,9 +566,9 @@ std::optional<std::string> limit_unavailable(const Scheme& scheme) {
   if (scheme.steps && !is_primal(scheme.split) && scheme.split != SplitRule::sqrt3 && scheme.split != SplitRule::dual)
     return std::string("no limit positions for composite schemes of the ") + to_string(scheme.split) + " yet";
   const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
-  if (!is_primal(scheme.split) && !point_split && scheme.split != SplitRule::dual)
+  if (!is_primal(scheme.split) && !point_split && scheme.split != SplitRule::dual && scheme.split != SplitRule::midedge)
     return std::string("no limit positions for the ") + to_string(scheme.split) +
-           ": they are written for the primal, sqrt3, sqrt2 and dual splits";
+           ": they are written for the primal, sqrt3, sqrt2, dual and midedge splits";
   return std::nullopt;
 }
 
@@ -576,7 +576,8 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   if (options.isolation_levels < 0 || options.max_resolve_levels < 0 || options.max_resolve_faces < 0)
     throw InvalidInputError("limit: refinement levels and faces must be >= 0");
   if (const auto reason = limit_unavailable(scheme)) throw InvalidInputError(std::string(scheme.name) + ": " + *reason);
-  if (scheme.split == SplitRule::dual) return dual_limit_positions(mesh, scheme, options);
+  if (scheme.split == SplitRule::dual || scheme.split == SplitRule::midedge)
+    return dual_limit_positions(mesh, scheme, options);
   const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
   // The closed forms are those of the standard rules. Under the
   // piecewise-smooth rules the generic masks of the modified matrices apply,

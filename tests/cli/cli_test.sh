@@ -301,8 +301,10 @@ run analyze-gcc-boundary 1 analyze -s gcc --boundary -k 2 && stderr_one_line ana
   stderr_has analyze-gcc-boundary "interior configurations only"
 run limit-gcc 0 limit "$meshes/cube.obj" -s gcc --degree 5 -o "$work/gcc_limit.obj" &&
   stdout_has limit-gcc "8 vertices at their gcc limit positions (generic masks)"
-run limit-gcc-even 1 limit "$meshes/cube.obj" -s gcc --degree 4 -o "$work/x.obj" && stderr_one_line limit-gcc-even &&
-  stderr_has limit-gcc-even "even degree"
+run limit-gcc-even 0 limit "$meshes/cube.obj" -s gcc --degree 4 -o "$work/gcc4_limit.obj" &&
+  stdout_has limit-gcc-even "8 vertices at their gcc limit positions (generic masks)"
+run limit-midedge 0 limit "$meshes/cube.obj" -s midedge -o "$work/midedge_limit.obj" &&
+  stdout_has limit-midedge "8 vertices at their midedge limit positions (generic masks)"
 run refine-sqrt3 0 refine "$meshes/cube.obj" -s sqrt3 --triangulate -l 3 -o "$work/s3.obj" --stats
 stdout_has refine-sqrt3 "level 1: 20 vertices, 36 faces" && stdout_has refine-sqrt3 "level 3: 164 vertices, 324 faces"
 run refine-sqrt3-open 0 refine "$meshes/l_shape.obj" -s sqrt3 --triangulate -l 2 -o "$work/s3l.obj"

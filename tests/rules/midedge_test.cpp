@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "subdiv/analysis/analyze.h"
+#include "subdiv/analysis/limit.h"
 
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/topology.h"
@@ -128,6 +129,55 @@ TEST(Midedge, RefusesBoundariesAndTags) {
   PolygonMesh cube = test::cube();
   cube.tags.corners.push_back({0, kInfiniteSharpness, CornerType::unspecified, std::nullopt});
   EXPECT_THROW(refine(cube, midedge_scheme(), levels(1)), InvalidInputError);
+}
+
+}  // namespace
+}  // namespace subdiv
+
+namespace subdiv {
+namespace {
+
+// Limits through the V-faces (analysis/dual_limit.h): vertex v's limit is
+// that of the face its first step makes around it (child face F + the rank
+// of v among the vertices of three or more edges), whose descendants keep
+// its index; their centroids are its limit at every level (each F-face of
+// a face keeps the face's vertex centroid), and their normals turn towards
+// the limit normal. A double pyramid: valences 4 and 5, where the analysis
+// gives tangents (at 3 it is inconclusive and gives none).
+TEST(Midedge, LimitsAreTheVFacesLimits) {
+  const PolygonMesh mesh = test::jittered(test::bipyramid(5), 21);
+  LimitOptions options;
+  options.normals = true;
+  const LimitResult limit = limit_positions(mesh, midedge_scheme(), options);
+  EXPECT_EQ(limit.approximated, 0);
+  const Index v_faces = mesh.face_count();
+  double previous_angle = 4.0;
+  for (int levels = 1; levels <= 7; levels += 2) {
+    RefineOptions o;
+    o.levels = levels;
+    const PolygonMesh fine = refine(mesh, midedge_scheme(), o);
+    double worst = 0.0, worst_angle = 0.0;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+      const auto face = fine.face(v_faces + v);
+      Vec3 centroid, newell;
+      for (std::size_t i = 0; i < face.size(); ++i) {
+        const Vec3 a = fine.positions[static_cast<std::size_t>(face[i])];
+        const Vec3 b = fine.positions[static_cast<std::size_t>(face[(i + 1) % face.size()])];
+        centroid += a;
+        newell += cross(a, b);
+      }
+      centroid = (1.0 / static_cast<double>(face.size())) * centroid;
+      const auto vi = static_cast<std::size_t>(v);
+      worst = std::max(worst, norm(centroid - limit.positions[vi]));
+      const Vec3 n = limit.normals[vi];
+      ASSERT_GT(norm(n), 0.5) << "vertex " << v;
+      worst_angle = std::max(worst_angle, std::atan2(norm(cross(n, newell)), dot(n, newell)));
+    }
+    EXPECT_LT(worst, 1e-14) << "level " << levels;
+    EXPECT_LT(worst_angle, previous_angle) << "level " << levels;
+    previous_angle = worst_angle;
+  }
+  EXPECT_LT(previous_angle, 0.05);
 }
 
 }  // namespace
