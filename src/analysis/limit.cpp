@@ -556,6 +556,9 @@ struct WholeLevel {
 }  // namespace
 
 std::optional<std::string> limit_unavailable(const Scheme& scheme) {
+  if (scheme.split == SplitRule::quasi_4_8)
+    return "no limit positions for quasi 4-8: its bisection follows the geometry, so its steps are not stationary and "
+           "no fixed subdivision matrix gives masks (the analysis's matrices belong to its planar n-gon experiment)";
   // A composite scheme of a primal or the sqrt3 split (gcc and midpoint of
   // odd degree, composite:Tvv4,... and composite:Tvv3,...) keeps its
   // vertices, so the analysis's masks of its whole level apply as for any

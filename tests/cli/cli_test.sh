@@ -158,14 +158,14 @@ run refine-doo-sabin-crease 1 refine "$work/ds_crease.obj" -s doo-sabin -o "$wor
 stderr_one_line refine-doo-sabin-crease && stderr_has refine-doo-sabin-crease "ds_crease.obj:6: doo-sabin has no crease rules"
 run limit-doo-sabin 0 limit "$meshes/cube.obj" -s doo-sabin -o "$work/ds_limit.obj" &&
   stdout_has limit-doo-sabin "8 vertices at their doo-sabin limit positions (generic masks)"
-# The sqrt3 and sqrt2 splits' limits: generic masks; midedge has none (one line).
+# The sqrt3 and sqrt2 splits' limits: generic masks; quasi 4-8 has none (one line).
 run limit-sqrt3 0 limit "$meshes/l_shape.obj" -s sqrt3 --triangulate --normals -o "$work/s3_limit.obj" &&
   stdout_has limit-sqrt3 "21 vertices at their sqrt3 limit positions (generic masks), with limit normals"
 run limit-four-eight 0 limit "$meshes/cube.obj" -s four-eight -o "$work/48_limit.obj" &&
   stdout_has limit-four-eight "8 vertices at their four-eight limit positions (generic masks)"
 [ ! -s "$work/err" ] && pass || fail "limit four-eight: unexpected warnings: $(cat "$work/err")"
-run limit-midedge 1 limit "$meshes/cube.obj" -s midedge -o "$work/x.obj" && stderr_one_line limit-midedge &&
-  stderr_has limit-midedge "no limit positions for the midedge split"
+run limit-quasi 1 limit "$meshes/tetrahedron.obj" -s quasi-4-8 -o "$work/x.obj" && stderr_one_line limit-quasi &&
+  stderr_has limit-quasi "its steps are not stationary"
 # limit names the file and line of what it cannot refine, as refine does.
 run limit-nonmanifold 1 limit "$data/nonmanifold_edge.obj" -o "$work/x.obj" && stderr_one_line limit-nonmanifold &&
   stderr_has limit-nonmanifold "nonmanifold_edge.obj:9: edge 0-1 is shared by 3 faces"

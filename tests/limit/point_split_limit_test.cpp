@@ -18,7 +18,6 @@
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/four_eight.h"
 #include "subdiv/rules/interpolatory_sqrt3.h"
-#include "subdiv/rules/midedge.h"
 #include "subdiv/rules/sqrt3.h"
 #include "support/test_meshes.h"
 
@@ -202,7 +201,6 @@ TEST(PointSplitLimit, IsolationLevelsPerSplit) {
   options.isolation_levels = 3;
   EXPECT_EQ(limit_positions(test::cube(), four_eight_scheme(), options).levels_refined, 6);
   EXPECT_EQ(limit_positions(triangulate(test::cube()), sqrt3_scheme(), options).levels_refined, 4);
-  EXPECT_THROW(limit_positions(test::cube(), midedge_scheme()), InvalidInputError);
 }
 
 }  // namespace
