@@ -50,7 +50,14 @@ enum class CompositeElement { vertex, edge, face };
 /// An averaging operator's coefficient: none, a number, or a function of
 /// the valence named by the preset it comes from.
 struct CompositeCoefficient {
-  enum class Kind { none, constant, loop, sqrt3 } kind = Kind::none;
+  /// Which coefficient: none, a number, or a named function of the valence.
+  enum class Kind {
+    none,      ///< the operator takes none
+    constant,  ///< `value`
+    loop,      ///< (3/2 + cos(2 pi/n))^2 / 2 - 1
+    sqrt3,     ///< 2/3 (1 + cos(2 pi/n))
+  };
+  Kind kind = Kind::none;  ///< which coefficient
   double value = 0.0;  ///< Kind::constant
   /// The coefficient at valence n.
   /// \param n the valence of the element written (>= 1).
@@ -61,8 +68,9 @@ struct CompositeCoefficient {
 /// One averaging operator of a composite scheme.
 struct CompositeOperator {
   std::string name;  ///< as written: "VdE", "EVc", ...
-  CompositeElement from = CompositeElement::vertex, to = CompositeElement::vertex;
-  CompositeCoefficient c;
+  CompositeElement from = CompositeElement::vertex;  ///< the elements it reads
+  CompositeElement to = CompositeElement::vertex;    ///< the elements it writes
+  CompositeCoefficient c;                            ///< its coefficient, where it takes one
 };
 
 /// A parsed composite scheme: its upsampling and its averages.
@@ -70,7 +78,7 @@ struct CompositeProgram {
   std::string spec;                      ///< the text it was parsed from, "composite:..."
   SplitRule split = SplitRule::triangle;  ///< Tvv4: triangle; Tvv3: sqrt3
   double upsampling = 4.0;               ///< old vertices' factor: 4 (Tvv4) or 3 (Tvv3)
-  std::vector<CompositeOperator> operators;
+  std::vector<CompositeOperator> operators;  ///< the averages, in order
 };
 
 /// The composite scheme a spec names, built on first use and kept for the

@@ -111,19 +111,20 @@ struct Quasi48Parameters {
   Quasi48Boundary boundary = Quasi48Boundary::fixed;  ///< the boundary treatment
 };
 
-/// A family's parameters: none, a tension, a degree with its smoothing
-/// operators, or quasi 4-8's boundary treatment. A registered scheme carries its defaults; set them on a copy
-/// (Scheme is a plain value) to refine or analyse another member; the rule
-/// file's check (Scheme::parameter_check) validates them. Masks read them
-/// from the LevelView.
 struct CompositeProgram;
 
 /// A composite scheme written as a sequence of averaging operators
 /// (rules/composite.h): its parsed program, shared by its steps.
 struct CompositeParameters {
-  std::shared_ptr<const CompositeProgram> program;
+  std::shared_ptr<const CompositeProgram> program;  ///< the upsampling and the averages
 };
 
+/// A family's parameters: none, a tension, a degree with its smoothing
+/// operators, quasi 4-8's boundary treatment, or a composite scheme's
+/// averaging operators. A registered scheme carries its defaults; set them
+/// on a copy (Scheme is a plain value) to refine or analyse another member;
+/// the rule file's check (Scheme::parameter_check) validates them. Masks
+/// read them from the LevelView.
 using SchemeParameters =
     std::variant<std::monostate, TensionParameters, DegreeParameters, Quasi48Parameters, CompositeParameters>;
 
