@@ -66,6 +66,11 @@ echo "== subdiv analyze -s sqrt3 -k 3..8 (two steps), kobbelt, and the generaliz
 "$subdiv" analyze -s sqrt3 -k 3..8
 "$subdiv" analyze -s kobbelt -k 3..8
 "$subdiv" analyze -s gcc -k 3..8
+echo "== a composite scheme written as averaging operators (Loop's, spelled out), the two-cycle sqrt3, interpolating sqrt2"
+"$subdiv" refine data/meshes/tetrahedron.obj -s 'composite:Tvv4,VdE,EVc(loop),VdE,EVc(loop)' -l 4 \
+  -o out/tetrahedron_composite_loop4.obj
+"$subdiv" analyze -s composite-sqrt3 -k 3..6 --no-charmap
+"$subdiv" refine data/meshes/cube.obj -s interpolating-sqrt2 -l 6 -o out/cube_interpolating-sqrt26.obj
 echo "== the L's concave corner: standard and piecewise-smooth rules"
 "$subdiv" refine data/meshes/l_shape.obj -s catmull-clark -l 4 -o out/l_shape_standard4.obj
 "$subdiv" refine data/meshes/l_shape.obj -s catmull-clark -l 4 --boundary-rules piecewise-smooth \
