@@ -28,12 +28,14 @@
 ///
 /// The sequence must end on vertices. c is a number, or `loop` (c(n) =
 /// (3/2 + cos(2 pi/n))^2 / 2 - 1) or `sqrt3` (c(n) = 2/3 (1 + cos(2 pi/n)))
-/// of the valence n of the vertex or face the operator writes (faces: 3).
+/// of the valence n of the element the operator writes (a vertex's valence,
+/// a face's size, an edge's 2).
 /// Each level is refined by the engine as a composite scheme (Scheme::steps):
 /// the split, then one smoothing step whose vertex masks are the averages
 /// composed over the split mesh's topology. Closed triangle meshes without
-/// sharp tags; a sequence whose masks do not sum to one (it does not reach
-/// the old vertices evenly) is refused when it is parsed.
+/// sharp tags; a sequence whose masks do not sum to one at some vertex (it
+/// does not reach the old vertices evenly) is refused when refinement meets
+/// that vertex (ParameterError naming the sum and the valence).
 
 #include <memory>
 #include <string>
@@ -88,8 +90,8 @@ struct CompositeProgram {
 ///   separated, as in the file comment.
 /// \return the scheme.
 /// \throws ParameterError if the spec does not parse (the message names the
-///   operator), does not start with an upsampling or end on vertices, or its
-///   masks do not sum to one.
+///   operator), does not start with an upsampling or does not end on
+///   vertices.
 const Scheme& composite_scheme(std::string_view spec);
 
 /// Whether \p name is a composite spec ("composite:..."): find_scheme()
