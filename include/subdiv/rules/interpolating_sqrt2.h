@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// Interpolating sqrt2 subdivision (sqrt2 split, QP arity sqrt 2, closed quad
-/// meshes): the 12-point face rule, old vertices kept. Every weight is in
-/// interpolating_sqrt2.cpp; C1 at valences 3..6, not shown at 7 and above
-/// (docs/schemes/interpolating-sqrt2.md).
+/// meshes): the 12-point face rule with virtual points at extraordinary
+/// vertices, old vertices kept. Every weight is in interpolating_sqrt2.cpp;
+/// C1 at valences 3..16 by the analysis (docs/schemes/interpolating-sqrt2.md).
 
 #include "subdiv/rules/scheme.h"
 
