@@ -16,12 +16,6 @@
 namespace subdiv {
 namespace {
 
-double size_of(const PolygonMesh& m) {
-  double s = 0;
-  for (const Vec3& p : m.positions) s = std::max(s, norm(p));
-  return s;
-}
-
 // The closed-form limit of an interior vertex on an all-quad (Catmull-Clark,
 // n^2 : 4 : 1 over n (n + 5)) or all-triangle (Loop, beta_limit) level.
 Vec3 closed_form_limit(const PolygonMesh& m, const MeshTopology& t, Index v, bool quads) {
@@ -53,7 +47,7 @@ TEST(Limit, MatchesTheClosedFormsAfterIsolation) {
     const Index first = fine.vertex_count() - mesh.vertex_count();  // vertex points come last, twice
     for (Index v = 0; v < mesh.vertex_count(); ++v)
       EXPECT_LT(norm(r.positions[static_cast<std::size_t>(v)] - closed_form_limit(fine, t, first + v, scheme == &catmull_clark_scheme())),
-                1e-12 * size_of(mesh))
+                1e-12 * test::radius(mesh))
           << scheme->name << " vertex " << v;
   }
 }

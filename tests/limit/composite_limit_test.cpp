@@ -28,12 +28,6 @@
 namespace subdiv {
 namespace {
 
-double size_of(const PolygonMesh& m) {
-  double s = 0;
-  for (const Vec3& p : m.positions) s = std::max(s, norm(p));
-  return s;
-}
-
 PolygonMesh spot() { return read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh; }
 
 // One Catmull-Clark level: all quads, with the input's extraordinary
@@ -59,7 +53,7 @@ TEST(CompositeLimit, GccOfDegreeThreeHasCatmullClarksLimits) {
     const LimitResult closed = limit_positions(mesh, catmull_clark_scheme(), options);
     EXPECT_EQ(composite.approximated, 0);
     ASSERT_EQ(composite.positions.size(), closed.positions.size());
-    const double size = size_of(mesh);
+    const double size = test::radius(mesh);
     for (std::size_t v = 0; v < closed.positions.size(); ++v) {
       EXPECT_EQ(composite.sources[v], LimitSource::generic) << v;
       EXPECT_LT(norm(composite.positions[v] - closed.positions[v]), 1e-11 * size) << "vertex " << v;
@@ -95,7 +89,7 @@ TEST(CompositeLimit, OddDegreesAgreeWithDeepRefinement) {
       }
       previous = worst;
     }
-    EXPECT_LT(previous, 1e-2 * size_of(cube));
+    EXPECT_LT(previous, 1e-2 * test::radius(cube));
   }
 }
 
@@ -109,7 +103,7 @@ TEST(CompositeLimit, CommutesWithAnAffineMap) {
   ASSERT_EQ(a.positions.size(), b.positions.size());
   EXPECT_EQ(a.approximated, 0);
   for (std::size_t v = 0; v < a.positions.size(); ++v)
-    EXPECT_LT(norm(map(a.positions[v]) - b.positions[v]), 1e-11 * size_of(moved)) << "vertex " << v;
+    EXPECT_LT(norm(map(a.positions[v]) - b.positions[v]), 1e-11 * test::radius(moved)) << "vertex " << v;
 }
 
 // Even degrees end with A, a dual split: a vertex's limit is its V-face's

@@ -33,12 +33,6 @@
 namespace subdiv {
 namespace {
 
-double size_of(const PolygonMesh& m) {
-  double s = 0;
-  for (const Vec3& p : m.positions) s = std::max(s, norm(p));
-  return s;
-}
-
 // Closed triangle meshes with interior valences 3 to 8.
 std::vector<std::pair<std::string, PolygonMesh>> closed_triangle_meshes() {
   return {{"tetrahedron", test::tetrahedron()},
@@ -58,7 +52,7 @@ void expect_same_refinement(const Scheme& composite, const Scheme& native, int l
     ASSERT_EQ(a.positions.size(), b.positions.size());
     double worst = 0.0;
     for (std::size_t i = 0; i < a.positions.size(); ++i) worst = std::max(worst, norm(a.positions[i] - b.positions[i]));
-    EXPECT_LT(worst, 1e-14 * size_of(mesh));
+    EXPECT_LT(worst, 1e-14 * test::radius(mesh));
   }
 }
 
@@ -93,7 +87,7 @@ TEST(Composite, AUsersSpecHasTheNativeSpectraAndLimits) {
     const LimitResult a = limit_positions(mesh, spec), b = limit_positions(mesh, loop_scheme());
     EXPECT_EQ(a.approximated, 0) << name;
     for (std::size_t v = 0; v < a.positions.size(); ++v)
-      EXPECT_LT(norm(a.positions[v] - b.positions[v]), 1e-12 * size_of(mesh)) << name << " vertex " << v;
+      EXPECT_LT(norm(a.positions[v] - b.positions[v]), 1e-12 * test::radius(mesh)) << name << " vertex " << v;
   }
 }
 
@@ -137,9 +131,9 @@ TEST(Composite, Sqrt3CompositesHaveLimits) {
   const LimitResult native = limit_positions(spot, sqrt3_scheme());
   EXPECT_EQ(kobbelt.approximated, 0);
   for (std::size_t v = 0; v < kobbelt.positions.size(); ++v)
-    EXPECT_LT(norm(kobbelt.positions[v] - native.positions[v]), 1e-12 * size_of(spot)) << "vertex " << v;
+    EXPECT_LT(norm(kobbelt.positions[v] - native.positions[v]), 1e-12 * test::radius(spot)) << "vertex " << v;
   const PolygonMesh mesh = test::jittered(triangulate(test::cube()), 7);  // valences 4, 5 and 6
-  const double size = size_of(mesh);
+  const double size = test::radius(mesh);
   LimitOptions three, four;
   three.isolation_levels = 3;
   four.isolation_levels = 4;

@@ -1,5 +1,6 @@
 #include "support/test_meshes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -82,6 +83,12 @@ PolygonMesh split_grid(int n, int m, bool other_diagonal) {
 PolygonMesh triangle_grid(int n, int m) { return split_grid(n, m, false); }
 
 PolygonMesh box_spline_grid(int n, int m) { return split_grid(n, m, true); }
+
+double radius(const PolygonMesh& mesh) {
+  double r = 0.0;
+  for (const Vec3& p : mesh.positions) r = std::max(r, norm(p));
+  return r;
+}
 
 PolygonMesh jittered(PolygonMesh mesh, unsigned seed) {
   std::mt19937 random(seed);

@@ -27,6 +27,9 @@ PolygonMesh bipyramid(int n);
 /// vertices of four edges, and two where the creases cross (corners of four
 /// sharp edges). The cube's corners keep valence 3.
 PolygonMesh creased_cube();
+/// The largest distance of a vertex from the origin: the scale that
+/// position tolerances are relative to.
+double radius(const PolygonMesh& mesh);
 /// The mesh with every vertex moved by up to 0.1 along each axis, the same
 /// for the same seed (std::mt19937).
 PolygonMesh jittered(PolygonMesh mesh, unsigned seed);
