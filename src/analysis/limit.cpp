@@ -559,15 +559,12 @@ std::optional<std::string> limit_unavailable(const Scheme& scheme) {
   if (scheme.split == SplitRule::quasi_4_8)
     return "no limit positions for quasi 4-8: its bisection follows the geometry, so its steps are not stationary and "
            "no fixed subdivision matrix gives masks (the analysis's matrices belong to its planar n-gon experiment)";
-  // A composite scheme of a primal or the sqrt3 split (gcc and midpoint of
-  // odd degree, composite:Tvv4,... and composite:Tvv3,...) keeps its
-  // vertices, so the analysis's masks of its whole level apply as for any
-  // such scheme (the sqrt3 split's: its averages read only topology and
-  // valences, which the neighbourhood match fixes); of the dual split (gcc
-  // and midpoint of even degree), the dual route's, whose neighbourhood walk
-  // reads as many rings as the analysis's matrix spans.
-  if (scheme.steps && !is_primal(scheme.split) && scheme.split != SplitRule::sqrt3 && scheme.split != SplitRule::dual)
-    return std::string("no limit positions for composite schemes of the ") + to_string(scheme.split) + " yet";
+  // Composite schemes take the route of their split, as any scheme: the
+  // analysis's masks of a whole level (gcc and midpoint of odd degree,
+  // composite:Tvv4,... and composite:Tvv3,..., whose averages read only
+  // topology and valences, which the neighbourhood match fixes), or the dual
+  // route (gcc and midpoint of even degree), whose neighbourhood walk reads
+  // as many rings as the analysis's matrix spans.
   const bool point_split = scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
   if (!is_primal(scheme.split) && !point_split && scheme.split != SplitRule::dual && scheme.split != SplitRule::midedge)
     return std::string("no limit positions for the ") + to_string(scheme.split) +

@@ -216,6 +216,14 @@ class Composer {
     return out;
   }
 
+  // (1 - c) `neighbours` + c times x's own value after `in` operators: the
+  // c-variants (FFc, VVc, EdEc) of the plain means.
+  Combination blend_with_own(Combination neighbours, std::size_t in, CompositeElement from, Index x, double c) {
+    for (auto& e : neighbours) e.second *= 1.0 - c;
+    add_scaled(neighbours, value(in, from, x), c);
+    return neighbours;
+  }
+
   // The kind of element x is the one operator k writes (vertices for k = 0).
   Combination compute(std::size_t k, Index x) {
     if (k == 0) return upsampled(x);
@@ -240,11 +248,7 @@ class Composer {
       for (const Index c : face_corners(x))
         if (const Index f = face_across(c); f != kInvalidIndex) xs.push_back(f);
       Combination out = mean(in, op.from, xs);
-      if (n == "FF") return out;
-      const double c = op.c.at(t_.face_size(x));
-      for (auto& e : out) e.second *= 1.0 - c;
-      add_scaled(out, value(in, op.from, x), c);
-      return out;
+      return n == "FF" ? out : blend_with_own(std::move(out), in, op.from, x, op.c.at(t_.face_size(x)));
     }
     if (n == "FV") {
       for (const Index c : t_.vertex_corners(x)) xs.push_back(t_.corner_face(c));
@@ -257,11 +261,7 @@ class Composer {
     if (n == "VV" || n == "VVc") {
       for (const Index e : t_.vertex_edges(x)) xs.push_back(t_.other_vertex(e, x));
       Combination out = mean(in, op.from, xs);
-      if (n == "VV") return out;
-      const double c = op.c.at(t_.valence(x));
-      for (auto& e : out) e.second *= 1.0 - c;
-      add_scaled(out, value(in, op.from, x), c);
-      return out;
+      return n == "VV" ? out : blend_with_own(std::move(out), in, op.from, x, op.c.at(t_.valence(x)));
     }
     if (n == "FVc" || n == "EVc") {
       // Per face F at x (its corner c): F or its edge leaving x, weighted c;
@@ -318,11 +318,7 @@ class Composer {
         xs.push_back(t_.corner_edge(t_.corner_prev(s)));
       }
       Combination out = mean(in, op.from, xs);
-      if (n == "EdE") return out;
-      const double c = op.c.at(2);
-      for (auto& e : out) e.second *= 1.0 - c;
-      add_scaled(out, value(in, op.from, x), c);
-      return out;
+      return n == "EdE" ? out : blend_with_own(std::move(out), in, op.from, x, op.c.at(2));
     }
     throw ParameterError(program_.spec + ": operator " + n + " has no definition");
   }
