@@ -248,7 +248,8 @@ class Composer {
       for (const Index c : face_corners(x))
         if (const Index f = face_across(c); f != kInvalidIndex) xs.push_back(f);
       Combination out = mean(in, op.from, xs);
-      return n == "FF" ? out : blend_with_own(std::move(out), in, op.from, x, op.c.at(t_.face_size(x)));
+      if (n == "FF") return out;
+      return blend_with_own(std::move(out), in, op.from, x, op.c.at(t_.face_size(x)));
     }
     if (n == "FV") {
       for (const Index c : t_.vertex_corners(x)) xs.push_back(t_.corner_face(c));
@@ -261,7 +262,8 @@ class Composer {
     if (n == "VV" || n == "VVc") {
       for (const Index e : t_.vertex_edges(x)) xs.push_back(t_.other_vertex(e, x));
       Combination out = mean(in, op.from, xs);
-      return n == "VV" ? out : blend_with_own(std::move(out), in, op.from, x, op.c.at(t_.valence(x)));
+      if (n == "VV") return out;
+      return blend_with_own(std::move(out), in, op.from, x, op.c.at(t_.valence(x)));
     }
     if (n == "FVc" || n == "EVc") {
       // Per face F at x (its corner c): F or its edge leaving x, weighted c;
@@ -301,8 +303,8 @@ class Composer {
       return mean(in, op.from, xs);
     }
     if (n == "VdEc") {
-      // c on each end and (1/2 - c) on each opposite vertex; an end without
-      // a face on one side takes that side's 1/2 itself.
+      // c on each end and (1/2 - c) on each opposite vertex; an edge without
+      // two faces (only at the analysis's outer boundary) takes its ends' mean.
       const auto sides = t_.edge_corners(x);
       const auto ends = t_.edge_vertices(x);
       if (sides.size() != 2) return mean(in, op.from, {ends[0], ends[1]});
@@ -318,7 +320,8 @@ class Composer {
         xs.push_back(t_.corner_edge(t_.corner_prev(s)));
       }
       Combination out = mean(in, op.from, xs);
-      return n == "EdE" ? out : blend_with_own(std::move(out), in, op.from, x, op.c.at(2));
+      if (n == "EdE") return out;
+      return blend_with_own(std::move(out), in, op.from, x, op.c.at(2));
     }
     throw ParameterError(program_.spec + ": operator " + n + " has no definition");
   }
