@@ -147,7 +147,9 @@ bool same(double a, double b) { return std::fabs(a - b) <= 1e-9; }
 class MaskCache {
  public:
   MaskCache(const Scheme& scheme, const RefineOptions& rules, BoundaryInterpolation boundary, CreaseMethod method)
-      : scheme_(scheme), rules_(rules), boundary_(boundary), method_(method) {}
+      : scheme_(scheme), rules_(rules), boundary_(boundary), method_(method) {
+    rules_.start_level = 0;  // the masks' level is even (sqrt3), as the analysis's ring meshes start
+  }
 
   /// Corners: keyed by type and angle under the piecewise-smooth rules
   /// (their edge points and the flatness modification depend on them); the
@@ -593,8 +595,9 @@ LimitResult limit_positions(const PolygonMesh& mesh, const Scheme& scheme, const
   // those (extraordinary vertices as far apart as after binary levels).
   if (scheme.split == SplitRule::sqrt2) levels *= 2;
   // The analysis's two-step sqrt3 matrix starts with a step that does not
-  // trisect the boundary: so must the masks' level.
-  if (scheme.split == SplitRule::sqrt3) levels += levels % 2;
+  // trisect the boundary: so must the masks' level, counted from level 0
+  // (a mesh at an odd start level takes an odd number of steps).
+  if (scheme.split == SplitRule::sqrt3) levels += (options.refine.start_level + levels) % 2;
   RefineOptions check = options.refine;
   check.levels = levels;
   check_refinable(mesh, scheme, check);

@@ -12,6 +12,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "subdiv/analysis/limit.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
@@ -280,8 +281,11 @@ AdaptiveResult LeafHierarchy::result() const {
 }  // namespace
 
 std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const AdaptiveOptions& options) {
-  if (scheme.steps) return "adaptive refinement does not cover composite schemes (their steps have no per-face rules)";
-  if (!is_primal(scheme.split)) return "adaptive refinement covers the quad and triangle splits";
+  if (const auto reason = limit_unavailable(scheme)) return "no adaptive refinement without limit positions, and " + *reason;
+  if (!is_primal(scheme.split))
+    return "adaptive refinement walks the face hierarchy of the quad and triangle splits, whose child faces nest in "
+           "their parents; the other splits' child faces straddle parent faces and need transition rules of their "
+           "own (such as Kobbelt's for sqrt3), not implemented";
   if (interpolates_with_wide_masks(scheme, options.depth))
     return "no adaptive refinement for an interpolating scheme: its vertices are on the limit surface at every "
            "level, so their distance to it says nothing about the faces in between";

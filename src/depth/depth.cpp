@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -29,7 +30,9 @@ bool all_quads(const PolygonMesh& mesh) {
 }
 
 // The faces a regular interior vertex has; a regular boundary vertex has half.
-int regular_faces(const Scheme& scheme) { return scheme.split == SplitRule::quad ? 4 : 6; }
+int regular_faces(const Scheme& scheme) {
+  return scheme.split == SplitRule::quad || scheme.split == SplitRule::sqrt2 ? 4 : 6;
+}
 
 bool is_regular(const Scheme& scheme, const Configuration& c) {
   const int regular = regular_faces(scheme);
@@ -54,7 +57,9 @@ double configuration_rate(const Scheme& scheme, const Configuration& c) {
   if (a.leading.size() <= index)
     throw InvalidInputError(std::string(scheme.name) + ": no depth bound: the analysis of " + c.name() +
                             " found no subdominant eigenvalue");
-  return std::abs(a.leading[index]);
+  // The analysis's matrix spans `period` steps (the sqrt3 split's two): the
+  // rate of one step is its root.
+  return std::pow(std::abs(a.leading[index]), 1.0 / scheme.traits.period);
 }
 
 // The configurations of the mesh's vertices, each with a vertex that has it
@@ -142,6 +147,19 @@ PolygonMesh refined(const PolygonMesh& mesh, const Scheme& scheme, const DepthOp
   steps.levels = levels;
   steps.on_level = nullptr;
   return refine(mesh, scheme, steps);
+}
+
+// The vertices' distances to their limits, every limit from masks: an
+// approximated limit would leave the bound's amplitude unknown.
+LimitDistances measured_distances(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& limit) {
+  LimitDistances distances = resolved_limit_distances(mesh, scheme, limit);
+  if (distances.approximated > 0)
+    throw InvalidInputError(std::string(scheme.name) + ": no depth bound: the limits of " +
+                            std::to_string(distances.approximated) + " of the " + std::to_string(mesh.vertex_count()) +
+                            " vertices at level " + std::to_string(limit.refine.start_level) +
+                            " are only approximated (extraordinary vertices too close to each other after four "
+                            "isolation levels), so the bound's amplitude is unknown");
+  return distances;
 }
 
 int max_valence(const PolygonMesh& mesh) {
@@ -277,13 +295,15 @@ bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& opti
 
 std::optional<std::string> depth_bound_unavailable(const Scheme& scheme, const DepthOptions& options) {
   if (scheme.fast_path.two_steps) return depth_bound_unavailable(*scheme.fast_path.two_steps, options);
-  if (scheme.steps)
-    return "no depth bound for composite schemes yet: the bounds are derived scheme by scheme (Loop, Catmull-Clark, "
-           "Doo-Sabin), and a composite's levels are not one of those";
+  if (const auto reason = limit_unavailable(scheme)) return "no depth bound without limit positions, and " + *reason;
+  if (scheme.split == SplitRule::dual && scheme.steps)
+    return "no depth bound for composite schemes that end with a dual step (gcc and midpoint of even degree) yet: "
+           "the dual bound is written for Doo-Sabin's rules, and a single vertex-to-limit term does not bound a "
+           "dual scheme (its first levels mix the subdominant component with faster ones)";
   if (scheme.split == SplitRule::dual) return std::nullopt;
-  if (!is_primal(scheme.split))
+  if (!is_primal(scheme.split) && scheme.split != SplitRule::sqrt3 && scheme.split != SplitRule::sqrt2)
     return std::string("no depth bound for the ") + to_string(scheme.split) +
-           " yet: the bounds are written for the quad, triangle and dual splits";
+           " yet: the bounds are written for the quad, triangle, sqrt3, sqrt2 and dual splits";
   if (interpolates_with_wide_masks(scheme, options))
     return "no depth bound for an interpolating scheme: every vertex stays on the limit surface, so the "
            "vertex-to-limit distance is zero at every depth and bounds nothing about the faces in between";
@@ -308,7 +328,9 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   // Doo-Sabin and the survey for Catmull-Clark).
   const int start = scheme.split == SplitRule::quad && !all_quads(mesh) ? 1 : 0;
   const PolygonMesh first = refined(mesh, scheme, options, start);
-  const LimitDistances distances = limit_distances(first, scheme, limit_options(options));
+  LimitOptions limit = limit_options(options);
+  limit.refine.start_level += start;
+  const LimitDistances distances = measured_distances(first, scheme, limit);
   const StartLevel level{first, mesh.vertex_count(), start, lines};
 
   // The paper's bounds cover regular vertices (Catmull-Clark) or only the
@@ -334,12 +356,32 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   }
 
   const WorstRate worst = worst_rate(level, scheme, false);
-  return {std::string(scheme.name),
-          "analysis",
-          start,
-          {{"largest control-vertex-to-limit distance, contracted by the slowest rate, at " + worst.where +
-                " (analysis)",
-            distances.max, worst.rate}}};
+  DepthBound bound{std::string(scheme.name),
+                   "analysis",
+                   start,
+                   {{"largest control-vertex-to-limit distance, contracted by the slowest rate, at " + worst.where +
+                         " (analysis)",
+                     distances.max, worst.rate}}};
+  // A rotating split (sqrt3: period 2) contracts by the analysis's rate over
+  // a whole period, not step by step: the new points of the period's first
+  // steps may lie further from their limits than the old vertices did. Each
+  // such level's own largest distance starts a term of its own, contracted
+  // per period from there.
+  PolygonMesh later = first;
+  for (int j = 1; j < scheme.traits.period; ++j) {
+    RefineOptions step = limit.refine;
+    step.levels = 1;
+    step.on_level = nullptr;
+    later = refine(later, scheme, step);
+    limit.refine.start_level += 1;
+    const double at_j = measured_distances(later, scheme, limit).max;
+    bound.terms.push_back({"largest vertex-to-limit distance after " + std::to_string(j) + " of a period of " +
+                               std::to_string(scheme.traits.period) + " steps, contracted by the same rate from there",
+                           worst.rate > 0.0 ? at_j / std::pow(worst.rate, j)
+                                            : std::numeric_limits<double>::infinity(),
+                           worst.rate});
+  }
+  return bound;
 }
 
 std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme, int levels) {
@@ -451,8 +493,13 @@ DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   DepthCheck check;
   check.depth = depth;
   check.bound = bound.at(depth);
-  const LimitOptions limit = limit_options(options);
   const int steps = bound.steps_per_level;  // refined and measured with the scheme's own steps and limits
+  // Measured at the level's own number (the sqrt3 split's boundary steps alternate).
+  const auto measure = [&](const PolygonMesh& level, int number) {
+    LimitOptions limit = limit_options(options);
+    limit.refine.start_level = number;
+    return resolved_limit_distances(level, scheme, limit);
+  };
   if (depth > 0) {
     // One hierarchy, its last level kept: depth - 1, then one more level of
     // the same refinement (the level's state carried, not restarted).
@@ -461,13 +508,13 @@ DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const Dept
     run.on_level = nullptr;
     Hierarchy levels = refine_hierarchy(mesh, scheme, run, KeepLevels::last);
     check.has_previous = true;
-    check.measured_previous = limit_distances(levels.finest().mesh, scheme, limit).max;
+    check.measured_previous = measure(levels.finest().mesh, levels.finest().level).max;
     refine_further(levels, scheme, steps, run, KeepLevels::last);
-    const LimitDistances at_depth = limit_distances(levels.finest().mesh, scheme, limit);
+    const LimitDistances at_depth = measure(levels.finest().mesh, levels.finest().level);
     check.measured = at_depth.max;
     check.approximated = at_depth.approximated;
   } else {
-    const LimitDistances at_depth = limit_distances(mesh, scheme, limit);
+    const LimitDistances at_depth = measure(mesh, options.refine.start_level);
     check.measured = at_depth.max;
     check.approximated = at_depth.approximated;
   }

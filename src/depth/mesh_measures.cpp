@@ -46,4 +46,16 @@ LimitDistances limit_distances(const PolygonMesh& mesh, const Scheme& scheme, co
   return out;
 }
 
+LimitDistances resolved_limit_distances(const PolygonMesh& mesh, const Scheme& scheme, LimitOptions options) {
+  constexpr int kMostIsolationLevels = 4;
+  LimitDistances distances = limit_distances(mesh, scheme, options);
+  while (distances.approximated > 0 && options.isolation_levels < kMostIsolationLevels) {
+    ++options.isolation_levels;
+    LimitDistances more = limit_distances(mesh, scheme, options);
+    if (more.approximated >= distances.approximated) break;
+    distances = std::move(more);
+  }
+  return distances;
+}
+
 }  // namespace subdiv

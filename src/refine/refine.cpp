@@ -9,6 +9,8 @@
 #include "subdiv/refine/hierarchy.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -38,6 +40,12 @@ TriangleSubdivision triangle_subdivision_of(const PolygonMesh& mesh, const RuleO
 
 namespace {
 
+// LevelView::level_id: unique within the process.
+std::uint64_t next_level_id() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
+
 // What the masks of one level see: the parent and its creasing. The parent
 // mesh supplies positions, channels and tags; once its topology is derived
 // its face arrays are dropped (refine_levels): faces come from the topology.
@@ -52,10 +60,11 @@ struct ParentLevel {
   std::span<const char> held = {};
   TriangleSubdivision triangle_subdivision = TriangleSubdivision::catmark;
   // The masks' views, built once per level rather than per child vertex.
+  std::uint64_t id = next_level_id();
   LevelView here{topology, creasing.edge_sharpness, 0.0, sector_angle, {}, parameters, level, creasing.vertex_rule,
-                 level_split, held, triangle_subdivision};
+                 level_split, held, triangle_subdivision, id};
   LevelView below{topology, creasing.edge_sharpness, 1.0, sector_angle, creasing.child_edge_sharpness,  // Chaikin: per edge end
-                  parameters, level, creasing.child_vertex_rule, level_split, held, triangle_subdivision};
+                  parameters, level, creasing.child_vertex_rule, level_split, held, triangle_subdivision, id};
   const LevelView& view() const { return here; }
   const LevelView& child_view() const { return below; }  // one level down
 };

@@ -16,7 +16,9 @@
 #include <algorithm>
 #include <cmath>
 #include <charconv>
+#include <cstdint>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <numbers>
 #include <unordered_map>
@@ -186,6 +188,8 @@ class Composer {
   Composer(const MeshTopology& t, const CompositeProgram& program, const SplitMap& split)
       : t_(t), program_(program), split_(split) {}
 
+  std::size_t kept() const noexcept { return memo_.size(); }
+
   const Combination& value(std::size_t k, CompositeElement kind, Index x) {
     const std::uint64_t key = (static_cast<std::uint64_t>(k) * 3 + static_cast<std::uint64_t>(kind)) << 40 |
                               static_cast<std::uint64_t>(x);
@@ -332,6 +336,22 @@ class Composer {
   std::unordered_map<std::uint64_t, Combination> memo_;
 };
 
+// The composer of this thread for this level: neighbouring vertices share
+// most intermediate averages, so one composer serves a level's vertices
+// (LevelView::level_id tells levels apart; a view without one gets a fresh
+// composer). Its memo is dropped once it holds kMostKept values, which
+// bounds the memory a large level takes.
+Composer& composer_for(const LevelView& level, const CompositeProgram& program) {
+  constexpr std::size_t kMostKept = std::size_t{1} << 12;
+  thread_local std::uint64_t id = 0;
+  thread_local std::unique_ptr<Composer> composer;
+  if (level.level_id == 0 || level.level_id != id || !composer || composer->kept() > kMostKept) {
+    composer = std::make_unique<Composer>(level.topology, program, *level.level_split);
+    id = level.level_id;
+  }
+  return *composer;
+}
+
 const CompositeProgram& program_of(const LevelView& level) {
   const auto* parameters = std::get_if<CompositeParameters>(&level.parameters);
   if (!parameters || !parameters->program) throw ParameterError("a composite step without its program");
@@ -345,7 +365,7 @@ const CompositeProgram& program_of(const LevelView& level) {
 void averaged_vertex(const LevelView& level, Index v, VertexRule, MaskBuilder& mask) {
   const CompositeProgram& program = program_of(level);
   if (!level.level_split) throw ParameterError(program.spec + ": its averages need the level's split");
-  Composer composer(level.topology, program, *level.level_split);
+  Composer& composer = composer_for(level, program);
   const Combination& c = composer.value(program.operators.size(), CompositeElement::vertex, v);
   double sum = 0.0;
   for (const auto& [u, w] : c) {

@@ -22,6 +22,7 @@
 #include "subdiv/rules/kobbelt.h"
 #include "subdiv/rules/loop.h"
 #include "depth/depth_test_meshes.h"
+#include "support/gcc_schemes.h"
 #include "support/test_meshes.h"
 
 namespace subdiv {
@@ -85,6 +86,32 @@ TEST(Adaptive, ConformingAndWithinEpsOnSharedMeshes) {
     expect_conforming_and_within(perturbed(mesh, eps, random), catmull_clark_scheme(), eps,
                                  std::string(file) + " (perturbed, catmull-clark)");
   }
+}
+
+// Composite schemes of the quad and triangle splits refine adaptively on
+// their uniform levels as any scheme of their split: gcc and midpoint of
+// odd degree, and composite-loop, whose adaptive mesh is Loop's (same faces,
+// positions to rounding: its levels equal Loop's to 1e-14).
+TEST(Adaptive, CompositeSchemesOfThePrimalSplits) {
+  std::mt19937 random(14);
+  const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
+  for (const Scheme& scheme : {test::midpoint(3), test::midpoint(5), test::gcc(5, 0.5, 0.25)}) {
+    const std::string name = std::string(scheme.name) + " of degree " +
+                             std::to_string(std::get<DegreeParameters>(scheme.parameters).degree);
+    expect_conforming_and_within(cube, scheme, 0.01, "cube (" + name + ")");
+    expect_conforming_and_within(perturbed(cube, 0.1, random), scheme, 0.005, "perturbed cube (" + name + ")");
+  }
+  const Scheme& composite_loop = *find_scheme("composite-loop");
+  const PolygonMesh bumpy = perturbed(triangulate(cube), 0.1, random);
+  expect_conforming_and_within(bumpy, composite_loop, 0.005, "perturbed cube (composite-loop)");
+  const PolygonMesh top = spinning_top(7, 4.0, 7.0, 3.0);
+  const AdaptiveResult composite = adaptive_refine(top, composite_loop, 0.05);
+  const AdaptiveResult loop = adaptive_refine(top, loop_scheme(), 0.05);
+  ASSERT_GT(composite.transition_faces, 0);
+  ASSERT_EQ(composite.mesh.face_indices, loop.mesh.face_indices);
+  ASSERT_EQ(composite.mesh.vertex_count(), loop.mesh.vertex_count());
+  for (std::size_t v = 0; v < loop.mesh.positions.size(); ++v)
+    ASSERT_LE(norm(composite.mesh.positions[v] - loop.mesh.positions[v]), 1e-12 * test::radius(top)) << v;
 }
 
 TEST(Adaptive, HalvesTheFacesOnARealMesh) {

@@ -34,49 +34,6 @@ const std::vector<std::string> kSharedMeshes = {
     "opensubdiv/catmark_pole8.obj",
 };
 
-constexpr std::int64_t kMaxFaces = 12000;  // keeps the deepest level cheap for CI
-
-double largest_extent(const PolygonMesh& mesh) {
-  Vec3 lo = mesh.positions.front();
-  Vec3 hi = lo;
-  for (const Vec3& p : mesh.positions)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], p[i]);
-      hi[i] = std::max(hi[i], p[i]);
-    }
-  return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-}
-
-PolygonMesh for_scheme(PolygonMesh mesh, const Scheme& scheme) {
-  return scheme.traits.needs_triangles ? triangulate(mesh) : mesh;
-}
-
-// Refines level by level up to the bound's depth for an eps it can reach
-// within kMaxFaces, checking the bound at every level and eps at the end.
-void check_bound_holds(const PolygonMesh& mesh, const Scheme& scheme, const std::string& name) {
-  const DepthBound bound = depth_bound(mesh, scheme);
-  int target = bound.start;
-  const std::vector<LevelCost> costs = level_costs(mesh, scheme, bound.start + 4);
-  while (target + 1 < static_cast<int>(costs.size()) && costs[static_cast<std::size_t>(target + 1)].faces <= kMaxFaces)
-    ++target;
-  const double eps = bound.at(target);
-  const int depth = bound.depth_for(eps);
-  ASSERT_LE(depth, target) << name;
-  PolygonMesh level = mesh;
-  for (int k = 0; k <= depth; ++k) {
-    if (k >= bound.start) {
-      const double measured = limit_distances(level, scheme).max;
-      // On a regular mesh the bound is attained (old vertices contract by
-      // exactly the rate), so the two sides differ only by rounding.
-      EXPECT_LE(measured, bound.at(k) * (1.0 + 1e-12)) << name << " " << scheme.name << " level " << k;
-      if (k == depth) {
-        EXPECT_LE(measured, eps * (1.0 + 1e-12)) << name << " " << scheme.name << " at depth " << depth;
-      }
-    }
-    level = refine(level, scheme);
-  }
-}
-
 TEST(DepthProperty, BoundHoldsOnSharedMeshesAndPerturbations) {
   const std::string dir = test::shared_mesh_dir();
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << "shared mesh collection not found at " << dir;

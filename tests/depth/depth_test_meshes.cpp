@@ -1,7 +1,14 @@
 #include "depth/depth_test_meshes.h"
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "subdiv/depth/depth.h"
+#include "subdiv/depth/mesh_measures.h"
+#include "subdiv/mesh/triangulate.h"
 
 namespace subdiv {
 
@@ -62,6 +69,65 @@ PolygonMesh perturbed(PolygonMesh mesh, double amount, std::mt19937& random) {
   std::uniform_real_distribution<double> offset(-amount, amount);
   for (Vec3& p : mesh.positions) p += Vec3{offset(random), offset(random), offset(random)};
   return mesh;
+}
+
+double largest_extent(const PolygonMesh& mesh) {
+  Vec3 lo = mesh.positions.front();
+  Vec3 hi = lo;
+  for (const Vec3& p : mesh.positions)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+}
+
+PolygonMesh for_scheme(PolygonMesh mesh, const Scheme& scheme) {
+  return scheme.traits.needs_triangles ? triangulate(mesh) : mesh;
+}
+
+namespace {
+
+void check_bound_holds_or_throw(const PolygonMesh& mesh, const Scheme& scheme, const std::string& name,
+                                std::int64_t max_faces) {
+  const DepthBound bound = depth_bound(mesh, scheme);
+  int target = bound.start;
+  const std::vector<LevelCost> costs = level_costs(mesh, scheme, bound.start + 4);
+  while (target + 1 < static_cast<int>(costs.size()) && costs[static_cast<std::size_t>(target + 1)].faces <= max_faces)
+    ++target;
+  const double eps = bound.at(target);
+  const int depth = bound.depth_for(eps);
+  ASSERT_LE(depth, target) << name;
+  PolygonMesh level = mesh;
+  for (int k = 0; k <= depth; ++k) {
+    SCOPED_TRACE("level " + std::to_string(k));
+    LimitOptions limit;
+    limit.refine.start_level = k;
+    if (k >= bound.start) {
+      const LimitDistances measured = resolved_limit_distances(level, scheme, limit);
+      EXPECT_EQ(measured.approximated, 0) << name << " " << scheme.name << " level " << k;
+      // On a regular mesh the bound is attained (old vertices contract by
+      // exactly the rate), so the two sides differ only by rounding.
+      EXPECT_LE(measured.max, bound.at(k) * (1.0 + 1e-12)) << name << " " << scheme.name << " level " << k;
+      if (k == depth) {
+        EXPECT_LE(measured.max, eps * (1.0 + 1e-12)) << name << " " << scheme.name << " at depth " << depth;
+      }
+    }
+    RefineOptions step = limit.refine;
+    step.levels = 1;
+    level = refine(level, scheme, step);
+  }
+}
+
+}  // namespace
+
+void check_bound_holds(const PolygonMesh& mesh, const Scheme& scheme, const std::string& name, std::int64_t max_faces) {
+  SCOPED_TRACE(name + ", " + std::string(scheme.name));
+  try {
+    check_bound_holds_or_throw(mesh, scheme, name, max_faces);
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << name << ", " << scheme.name << ": " << e.what();
+  }
 }
 
 }  // namespace subdiv

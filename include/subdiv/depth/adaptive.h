@@ -58,7 +58,8 @@ struct AdaptiveResult {
 /// hole tags (no rule here keeps a hole open). The result carries positions
 /// and faces only: no channels and no tags.
 /// \param mesh The control mesh.
-/// \param scheme The scheme (quad or triangle split, not composite).
+/// \param scheme The scheme (quad or triangle split; a composite scheme's
+///        level split).
 /// \param eps The accuracy: the largest vertex-to-limit distance allowed at
 ///        a leaf's corners (mesh units), positive.
 /// \param options The refinement rules and the deepest level.
@@ -74,9 +75,9 @@ struct AdaptiveResult {
 AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
                                const AdaptiveOptions& options = {});
 
-/// Why adaptive_refine() refuses \p scheme whatever the mesh (composite
-/// schemes, splits other than quad and triangle, interpolating schemes with
-/// wide masks), or nothing where it covers it.
+/// Why adaptive_refine() refuses \p scheme whatever the mesh (splits other
+/// than quad and triangle, interpolating schemes with wide masks), or nothing
+/// where it covers it.
 /// \param scheme The scheme.
 /// \param options The refinement rules the scheme is analysed under.
 /// \return The reason, one sentence; nullopt where adaptive refinement applies.

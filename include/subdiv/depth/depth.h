@@ -27,7 +27,10 @@ struct DepthOptions {
 /// analysis where the paper's argument does not reach (Catmull-Clark);
 /// every other scheme from the analysis alone: the largest distance of a
 /// control vertex to its limit, contracted per step by the slowest rate
-/// among the configurations present (docs/depth.md). A scheme
+/// among the configurations present, the rate of one step being the root of
+/// the analysis's rate over its period (two steps for the sqrt3 split, with
+/// a term for the distances one step in); composite schemes of the quad,
+/// triangle and sqrt3 splits likewise (docs/depth.md). A scheme
 /// with a two-step scheme (Scheme::fast_path.two_steps: 4-8) is bounded through it,
 /// in levels of two steps (DepthBound::steps_per_level).
 /// \param mesh The control mesh.
@@ -37,6 +40,8 @@ struct DepthOptions {
 ///        messages; nullptr: none.
 /// \return The bound, with `scheme` set to \p scheme's name.
 /// \throws InvalidInputError if depth_bound_unavailable() gives a reason,
+///         some vertex's limit is only approximated after four isolation
+///         levels (resolved_limit_distances()),
 ///         refinement rejects the mesh (as refine() does: TopologyError,
 ///         ValidationError, ParameterError), limit positions fail (as
 ///         limit_positions() does), or a vertex's configuration has no rate
@@ -48,9 +53,10 @@ struct DepthOptions {
 DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options = {},
                        const SourceLines* lines = nullptr);
 
-/// Why depth_bound() refuses \p scheme whatever the mesh (composite schemes,
-/// splits without a bound, interpolating schemes with wide masks), or
-/// nothing where a bound applies.
+/// Why depth_bound() refuses \p scheme whatever the mesh (schemes without
+/// limit positions, composite schemes that end with a dual step, splits
+/// without a bound, interpolating schemes with wide masks), or nothing where
+/// a bound applies.
 /// \param scheme The scheme.
 /// \param options The refinement rules the scheme is analysed under.
 /// \return The reason, one sentence; nullopt where a bound applies.

@@ -44,4 +44,16 @@ struct LimitDistances {
 /// \throws std::bad_alloc if memory runs out.
 LimitDistances limit_distances(const PolygonMesh& mesh, const Scheme& scheme, const LimitOptions& options = {});
 
+/// limit_distances(), with LimitOptions::isolation_levels raised one at a
+/// time, up to 4, while some vertices' limits are only approximated and
+/// each raise resolves more of them: schemes with wide rules (composite
+/// sqrt3) need their extraordinary vertices further apart than two levels
+/// leave them. The result's `approximated` is what remains.
+/// \param mesh The mesh.
+/// \param scheme The scheme.
+/// \param options The limit options; `isolation_levels` is where the search starts.
+/// \return The distances, as limit_distances().
+/// \throws As limit_distances().
+LimitDistances resolved_limit_distances(const PolygonMesh& mesh, const Scheme& scheme, LimitOptions options = {});
+
 }  // namespace subdiv

@@ -201,6 +201,11 @@ struct LevelView {
   /// Catmull-Clark's edge rule where a triangle meets the edge: the level's
   /// `smoothtriangles` tag (OpenSubdiv's Sdc::Options::TriangleSubdivision).
   TriangleSubdivision triangle_subdivision = TriangleSubdivision::catmark;
+  /// A number the engine gives each level it refines, unique within the
+  /// process, so that masks may keep work shared between a level's points
+  /// (a composite scheme's intermediate averages) without mistaking one
+  /// level for another; 0 in views made outside the engine: nothing kept.
+  std::uint64_t level_id = 0;
 
   /// Whether edge \p e is sharp for the rule being evaluated.
   /// \param e an edge of `topology`.
