@@ -26,6 +26,7 @@ struct Level {
   PolygonMesh mesh;
   std::optional<MeshTopology> topology;
   std::vector<double> distance;
+  std::vector<char> approximated;  // the vertex's limit is only approximated: distance to that
   SplitMap map;                 // to the next level
   std::vector<char> exists;     // face is in the hierarchy (its parent was split)
   std::vector<char> split;      // face is replaced by its children
@@ -67,7 +68,9 @@ class LeafHierarchy {
     limit.normals = false;
     limit.refine = options_.depth.refine;
     limit.refine.on_level = nullptr;
-    level.distance = limit_distances(level.mesh, scheme_, limit).distances;
+    LimitDistances distances = resolved_limit_distances(level.mesh, scheme_, limit);
+    level.distance = std::move(distances.distances);
+    level.approximated = std::move(distances.approximated_vertices);
     level.exists.assign(static_cast<std::size_t>(level.topology->face_count()), 0);
     level.split.assign(level.exists.size(), 0);
     level.edge_split.assign(static_cast<std::size_t>(level.topology->edge_count()), 0);
@@ -272,6 +275,7 @@ AdaptiveResult LeafHierarchy::result() const {
     out.sources[id] = {at.level, at.index};
     out.mesh.positions[id] = level.mesh.positions[static_cast<std::size_t>(at.index)];
     out.distances[id] = level.distance[static_cast<std::size_t>(at.index)];
+    out.approximated += level.approximated[static_cast<std::size_t>(at.index)];
   }
   out.uniform_depth = static_cast<int>(levels_.size()) - 1;
   out.uniform_faces = levels_.back().mesh.face_count();

@@ -157,8 +157,8 @@ LimitDistances measured_distances(const PolygonMesh& mesh, const Scheme& scheme,
     throw InvalidInputError(std::string(scheme.name) + ": no depth bound: the limits of " +
                             std::to_string(distances.approximated) + " of the " + std::to_string(mesh.vertex_count()) +
                             " vertices at level " + std::to_string(limit.refine.start_level) +
-                            " are only approximated (extraordinary vertices too close to each other after four "
-                            "isolation levels), so the bound's amplitude is unknown");
+                            " are only approximated (no configuration's masks match them after four isolation "
+                            "levels), so the bound's amplitude is unknown");
   return distances;
 }
 

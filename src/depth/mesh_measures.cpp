@@ -36,6 +36,9 @@ LimitDistances limit_distances(const PolygonMesh& mesh, const Scheme& scheme, co
   LimitDistances out;
   out.approximated = limit.approximated;
   out.distances.resize(mesh.positions.size());
+  out.approximated_vertices.resize(mesh.positions.size());
+  for (std::size_t v = 0; v < limit.sources.size() && v < mesh.positions.size(); ++v)
+    out.approximated_vertices[v] = limit.sources[v] == LimitSource::refined_position ? 1 : 0;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     out.distances[v] = norm(mesh.positions[v] - limit.positions[v]);
     if (out.distances[v] > out.max || out.max_vertex == kInvalidIndex) {

@@ -813,20 +813,32 @@ run quiet-limit 0 limit "$meshes/cube.obj" -o "$work/lq.obj" -q
 # One support matrix, from the library's own checks: what it says no to, the command refuses with the same reason.
 run schemes-matrix 0 schemes --matrix &&
   grep -qE '^catmull-clark +yes +yes +yes +yes +yes +yes$' "$work/out" && pass || fail "schemes --matrix: catmull-clark row"
-grep -qE '^sqrt3 +yes +yes +no \([0-9]+\) ' "$work/out" && grep -q "no depth bound for the sqrt3 split" "$work/out" && pass ||
-  fail "schemes --matrix: sqrt3's depth"
+grep -qE '^midedge +yes +yes +no \([0-9]+\) ' "$work/out" && grep -q "no depth bound for the midedge split" "$work/out" && pass ||
+  fail "schemes --matrix: midedge's depth"
 sed -n '/<!-- schemes-matrix -->/,/<!-- \/schemes-matrix -->/p' "$project_dir/README.md" | sed '1,2d;$d' | sed '$d' \
   >"$work/readme_matrix" && diff -q "$work/out" "$work/readme_matrix" >/dev/null && pass ||
   fail "README.md's support matrix differs from 'subdiv schemes --matrix' (paste the command's output)"
-run depth-sqrt3-refused 1 depth "$meshes/cube.obj" -s sqrt3 --triangulate --eps 0.01 &&
-  stderr_one_line depth-sqrt3-refused && stderr_has depth-sqrt3-refused "no depth bound for the sqrt3 split"
+run depth-midedge-refused 1 depth "$meshes/cube.obj" -s midedge --eps 0.01 &&
+  stderr_one_line depth-midedge-refused && stderr_has depth-midedge-refused "no depth bound for the midedge split"
+run depth-sqrt3 0 depth "$meshes/cube.obj" -s sqrt3 --triangulate --eps 0.01 --verify &&
+  stdout_has depth-sqrt3 "of a period of 2 steps" && stdout_has depth-sqrt3 ": within"
+run adaptive-sqrt3-refused 1 adaptive "$meshes/cube.obj" -s sqrt3 --triangulate --eps 0.01 -o "$work/x.obj" &&
+  stderr_one_line adaptive-sqrt3-refused && stderr_has adaptive-sqrt3-refused "child faces straddle parent faces"
+# A limit the generic masks cannot resolve (piecewise-smooth rules at an
+# edge-only boundary vertex of one face) leaves no bound: refused, not
+# guessed; adaptive refinement goes on and says where eps is not established.
+run depth-unresolved-limits 1 depth "$meshes/l_shape.obj" --eps 0.01 --boundary edge-only --boundary-rules piecewise-smooth &&
+  stderr_one_line depth-unresolved-limits && stderr_has depth-unresolved-limits "only approximated"
+run adaptive-unresolved-limits 0 adaptive "$meshes/l_shape.obj" --eps 0.05 --max-level 3 -o "$work/x.obj" \
+  --boundary edge-only --boundary-rules piecewise-smooth &&
+  stderr_has adaptive-unresolved-limits "only approximated, and the accuracy is not established there"
 
 # One program: the options of every command that refines, the same everywhere.
 for command in "limit -o $work/ro_limit.obj" "depth --eps 0.01" "adaptive --eps 0.05 --max-level 3 -o $work/ro_adaptive.obj"; do
   set -- $command
   name=$1
   shift
-  run "$name-rule-options" 0 "$name" "$meshes/l_shape.obj" "$@" -s catmull-clark --boundary edge-only \
+  run "$name-rule-options" 0 "$name" "$meshes/l_shape.obj" "$@" -s catmull-clark --boundary edge-and-corner \
     --crease-method chaikin --boundary-rules piecewise-smooth --corner 0:convex --crease 0,1 --threads 1
   run "$name-triangulate" 0 "$name" "$meshes/cube.obj" "$@" -s loop --triangulate
   run "$name-tension" 1 "$name" "$meshes/cube.obj" "$@" --tension 0.1 && stderr_one_line "$name-tension" &&

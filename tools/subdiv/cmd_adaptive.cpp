@@ -109,6 +109,11 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
   clock.lap("adaptive");
   warn_dropped_tags(opt.input, file.mesh.tags);
   warn_not_carried(opt.input, file.mesh, result.mesh);
+  if (result.approximated > 0)
+    warnf("subdiv: warning: %s no configuration's masks after four isolation levels: %s only approximated, and "
+          "the accuracy is not established there\n",
+          count_of(result.approximated, "output vertex matches", "output vertices match").c_str(),
+          result.approximated == 1 ? "its limit is" : "their limits are");
 
   WriteOptions wopt;
   wopt.ply_encoding = opt.ascii ? PlyEncoding::ascii : PlyEncoding::binary_little_endian;
@@ -129,6 +134,7 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
                 {"transition_faces", result.transition_faces},
                 {"deepest_level", result.leaves_per_level_max},
                 {"largest_distance", worst},
+                {"approximated", result.approximated},
                 {"bound_steps", bound_steps ? nlohmann::ordered_json(*bound_steps) : nlohmann::ordered_json(nullptr)},
                 {"uniform", {{"steps", result.uniform_depth}, {"faces", result.uniform_faces}}},
                 {"uniform_to_adaptive_faces", ratio},

@@ -42,6 +42,10 @@ struct AdaptiveResult {
   PolygonMesh mesh;  ///< conforming; faces of the uniform levels and transition faces
   std::vector<AdaptiveVertexSource> sources;  ///< one per output vertex
   std::vector<double> distances;              ///< each output vertex's distance to its limit
+  /// Output vertices whose limit is only approximated (limit_positions()
+  /// matched no configuration after four isolation levels): their
+  /// `distances` are to that approximation, and eps is not established there.
+  Index approximated = 0;
   /// Uniform steps after which every vertex is within eps (measured), and
   /// the face count there: what adaptive refinement is compared with.
   int uniform_depth = 0;

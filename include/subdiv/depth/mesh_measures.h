@@ -29,6 +29,9 @@ struct LimitDistances {
   double max = 0.0;               ///< the largest distance; 0 for a mesh without vertices
   Index max_vertex = kInvalidIndex;  ///< a vertex at `max` (the first); kInvalidIndex without vertices
   Index approximated = 0;  ///< vertices whose limit is only approximated (see LimitResult)
+  /// Per vertex, 1 where its limit is only approximated (its distance is to
+  /// its refined position, LimitSource::refined_position).
+  std::vector<char> approximated_vertices;
 };
 
 /// Every vertex's distance to its limit position under \p scheme
