@@ -32,6 +32,7 @@ py::dict depth(const PolygonMesh& mesh, const std::string& scheme_name, double e
   d["source"] = bound.source;
   d["start"] = bound.start;
   d["steps_per_level"] = bound.steps_per_level;
+  d["measure"] = to_string(bound.measure);
   py::list terms;
   for (const DepthTerm& term : bound.terms) {
     py::dict t;

@@ -9,10 +9,13 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "depth/dual_face_bound.h"
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
+#include "subdiv/analysis/regular_smoothness.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/depth_bound.h"
 #include "subdiv/depth/mesh_measures.h"
@@ -276,6 +279,84 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
   }
 }
 
+// The largest distance between `level`'s linear surface (flat triangles,
+// bilinear quads) and the next level's vertices `samples` levels down, at
+// the same parameter: the linear or bilinear scheme's refinement numbers
+// its vertices as the scheme's own (the same split).
+double linear_surface_distance(const PolygonMesh& level, int level_number, const Scheme& scheme,
+                               const RefineOptions& rules, int samples) {
+  const Scheme& flat = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
+  RefineOptions steps = rules;
+  steps.levels = samples;
+  steps.start_level = level_number;
+  steps.on_level = nullptr;
+  const PolygonMesh exact = refine(level, scheme, steps);
+  const PolygonMesh linear = refine(level, flat, steps);
+  double worst = 0.0;
+  for (std::size_t v = 0; v < exact.positions.size(); ++v)
+    worst = std::max(worst, norm(exact.positions[v] - linear.positions[v]));
+  return worst;
+}
+
+// Interpolating schemes with wide masks (docs/depth.md, "Interpolating
+// schemes"): the level's linear surface against the limit. A step moves
+// the linear surface by at most its largest displacement D_j (new vertex
+// against the parent level's linear surface there; the difference of two
+// nested linear surfaces is linear on each child face, zero at the old
+// vertices), so the distance after k steps is at most the sum of D_j, j >= k.
+// D_j contracts by the slowest of |lambda_1| at the extraordinary
+// configurations present and the regular rules' bound on their second
+// differences' contraction; its amplitude is measured over the first two
+// steps (the first step's new vertices may move further than the control
+// mesh's shape gives).
+DepthBound interpolating_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options,
+                                     const SourceLines* lines) {
+  const std::string name(scheme.name);
+  const int level0 = options.refine.start_level;
+  const StartLevel start{mesh, mesh.vertex_count(), 0, lines};
+  const WorstRate extraordinary = worst_rate(start, scheme, true);
+  bool has_boundary = false;
+  {
+    const MeshTopology t(mesh);
+    for (Index v = 0; v < t.vertex_count() && !has_boundary; ++v) has_boundary = t.vertex_kind(v) != VertexKind::interior;
+  }
+  RegularSmoothness regular = regular_smoothness_of(scheme, options.refine, false);
+  std::string regular_where = "the regular interior rules";
+  if (has_boundary) {
+    const RegularSmoothness edge = regular_smoothness(regular_boundary_rule(scheme, options.refine));
+    if (!(edge.upper > 0.0)) regular = edge;
+    else if (edge.upper > regular.upper) {
+      regular = edge;
+      regular_where = "the regular boundary rules";
+    }
+  }
+  if (!(regular.upper > 0.0 && regular.upper < 1.0))
+    throw InvalidInputError(name + ": no depth bound: the regular rules give no contraction of their second "
+                            "differences (" + regular.reason + ")");
+  double rate = regular.upper;
+  std::string slowest = regular_where + "' second differences (joint spectral radius <= " +
+                        std::to_string(regular.upper) + ")";
+  if (extraordinary.rate > rate) {
+    rate = extraordinary.rate;
+    slowest = "|lambda_1| at " + extraordinary.where + " (analysis)";
+  }
+  RefineOptions one = options.refine;
+  one.levels = 1;
+  one.on_level = nullptr;
+  const double d0 = linear_surface_distance(mesh, level0, scheme, options.refine, 1);
+  const double d1 = linear_surface_distance(refine(mesh, scheme, one), level0 + 1, scheme, options.refine, 1);
+  const double amplitude = std::max(d0, rate > 0.0 ? d1 / rate : 0.0) / (1.0 - rate);
+  DepthBound bound{name,
+                   "analysis (interpolating)",
+                   0,
+                   {{"largest displacement of a step's new vertices from the level's linear surface (the larger of "
+                     "the first two steps'), summed over the steps to come, contracted by the slowest rate: " +
+                         slowest,
+                     amplitude, rate}}};
+  bound.measure = DepthMeasure::surface_to_limit;
+  return bound;
+}
+
 }  // namespace
 
 // An interpolating scheme whose rules reach beyond the one-ring (the
@@ -304,9 +385,11 @@ std::optional<std::string> depth_bound_unavailable(const Scheme& scheme, const D
   if (!is_primal(scheme.split) && scheme.split != SplitRule::sqrt3 && scheme.split != SplitRule::sqrt2)
     return std::string("no depth bound for the ") + to_string(scheme.split) +
            " yet: the bounds are written for the quad, triangle, sqrt3, sqrt2 and dual splits";
-  if (interpolates_with_wide_masks(scheme, options))
-    return "no depth bound for an interpolating scheme: every vertex stays on the limit surface, so the "
-           "vertex-to-limit distance is zero at every depth and bounds nothing about the faces in between";
+  if (!is_primal(scheme.split) && interpolates_with_wide_masks(scheme, options))
+    return std::string("no depth bound for an interpolating scheme on the ") + to_string(scheme.split) +
+           ": its vertices are on the limit, and a level's linear surface does not contain the next level's (child "
+           "faces straddle parent faces), so the new vertices' displacements do not add up to its distance from the "
+           "limit";
   return std::nullopt;
 }
 
@@ -323,6 +406,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   if (const auto reason = depth_bound_unavailable(scheme, options))
     throw InvalidInputError(std::string(scheme.name) + ": " + *reason);
   if (scheme.split == SplitRule::dual) return dual_depth_bound(mesh, scheme, options);
+  if (interpolates_with_wide_masks(scheme, options)) return interpolating_depth_bound(mesh, scheme, options, lines);
   // Quad-split schemes on a mesh with other faces: the bound starts after
   // the first step, which makes every face a quad (as the paper does for
   // Doo-Sabin and the survey for Catmull-Clark).
@@ -494,11 +578,16 @@ DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const Dept
   check.depth = depth;
   check.bound = bound.at(depth);
   const int steps = bound.steps_per_level;  // refined and measured with the scheme's own steps and limits
-  // Measured at the level's own number (the sqrt3 split's boundary steps alternate).
+  // Measured at the level's own number (the sqrt3 split's boundary steps
+  // alternate): every vertex against its limit, or the level's linear
+  // surface against the next level's vertices, which are on the limit.
   const auto measure = [&](const PolygonMesh& level, int number) {
+    if (bound.measure == DepthMeasure::surface_to_limit)
+      return std::pair{linear_surface_distance(level, number, scheme, options.refine, 1), Index{0}};
     LimitOptions limit = limit_options(options);
     limit.refine.start_level = number;
-    return resolved_limit_distances(level, scheme, limit);
+    const LimitDistances distances = resolved_limit_distances(level, scheme, limit);
+    return std::pair{distances.max, distances.approximated};
   };
   if (depth > 0) {
     // One hierarchy, its last level kept: depth - 1, then one more level of
@@ -508,15 +597,11 @@ DepthCheck check_depth(const PolygonMesh& mesh, const Scheme& scheme, const Dept
     run.on_level = nullptr;
     Hierarchy levels = refine_hierarchy(mesh, scheme, run, KeepLevels::last);
     check.has_previous = true;
-    check.measured_previous = measure(levels.finest().mesh, levels.finest().level).max;
+    check.measured_previous = measure(levels.finest().mesh, levels.finest().level).first;
     refine_further(levels, scheme, steps, run, KeepLevels::last);
-    const LimitDistances at_depth = measure(levels.finest().mesh, levels.finest().level);
-    check.measured = at_depth.max;
-    check.approximated = at_depth.approximated;
+    std::tie(check.measured, check.approximated) = measure(levels.finest().mesh, levels.finest().level);
   } else {
-    const LimitDistances at_depth = measure(mesh, options.refine.start_level);
-    check.measured = at_depth.max;
-    check.approximated = at_depth.approximated;
+    std::tie(check.measured, check.approximated) = measure(mesh, options.refine.start_level);
   }
   return check;
 }

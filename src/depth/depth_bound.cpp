@@ -20,6 +20,10 @@ constexpr int kMaxDepth = 64;
 
 }  // namespace
 
+const char* to_string(DepthMeasure m) noexcept {
+  return m == DepthMeasure::vertex_to_limit ? "vertex-to-limit" : "surface-to-limit";
+}
+
 double DepthBound::at(int level) const noexcept {
   if (level < start) return std::numeric_limits<double>::infinity();
   double worst = 0.0;

@@ -641,13 +641,16 @@ run depth-four-eight 0 depth "$meshes/cube.obj" -s four-eight --eps 0.01 --verif
   stdout_has depth-four-eight "depth for accuracy 0.01: 5" && stdout_has depth-four-eight "refine -l 10" &&
   stdout_has depth-four-eight "     5           6146           6144" && stdout_has depth-four-eight "verify: after 10 steps" &&
   stdout_has depth-four-eight ": within"
-run depth-butterfly 1 depth "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 && stderr_one_line depth-butterfly &&
-  stderr_has depth-butterfly "butterfly: no depth bound for an interpolating scheme"
+run depth-butterfly 0 depth "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 --verify &&
+  stdout_has depth-butterfly "distance of the level's linear surface to the limit" && stdout_has depth-butterfly ": within"
+run depth-interpolatory-sqrt3 1 depth "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 --eps 0.01 &&
+  stderr_one_line depth-interpolatory-sqrt3 &&
+  stderr_has depth-interpolatory-sqrt3 "no depth bound for an interpolating scheme on the sqrt3 split"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/square.obj"
 run depth-doo-sabin-corner 0 depth "$work/square.obj" -s doo-sabin --eps 0.01 --verify &&
   stdout_has depth-doo-sabin-corner "after k >= 3 steps" && stdout_has depth-doo-sabin-corner ": within"
 run depth-verify-budget 1 depth "$meshes/cube.obj" -s loop --triangulate --eps 1e-8 --verify &&
-  stderr_one_line depth-verify-budget && stderr_has depth-verify-budget "--verify: depth 23 has" &&
+  stderr_one_line depth-verify-budget && stderr_has depth-verify-budget "--verify: level 23 has" &&
   stderr_has depth-verify-budget "over the verification budget of 2^28 faces"
 run depth-bad-eps 1 depth "$meshes/cube.obj" -s loop --eps -1 && stderr_one_line depth-bad-eps &&
   stderr_has depth-bad-eps "--eps: must be a positive number, not -1" &&

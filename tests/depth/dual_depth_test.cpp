@@ -21,7 +21,6 @@
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/topology.h"
-#include "subdiv/mesh/triangulate.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/doo_sabin.h"
 #include "subdiv/rules/scheme.h"
@@ -340,19 +339,6 @@ TEST(DooSabinDepth, LevelCostsMatchRefinement) {
       EXPECT_EQ(cost.corners, level.corner_count()) << "level " << cost.level;
       EXPECT_EQ(cost.edges, t.edge_count()) << "level " << cost.level;
       level = refine(level, doo_sabin_scheme());
-    }
-  }
-}
-
-TEST(DepthBound, ButterflySchemesAreRefusedAsInterpolating) {
-  const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
-  for (const char* name : {"butterfly", "modified-butterfly"}) {
-    const Scheme& scheme = *find_scheme(name);
-    try {
-      (void)depth_bound(scheme.traits.needs_triangles ? triangulate(cube) : cube, scheme);
-      ADD_FAILURE() << name << " was not refused";
-    } catch (const InvalidInputError& e) {
-      EXPECT_NE(std::string(e.what()).find("interpolating"), std::string::npos) << e.what();
     }
   }
 }

@@ -41,9 +41,16 @@ struct DepthCommandOptions {
   ReportOptionValues report;
 };
 
+// What the bound measures, as the report says it.
+const char* measured_distance(const DepthBound& bound) {
+  return bound.measure == DepthMeasure::surface_to_limit
+             ? "distance of the level's linear surface to the limit (the vertices are on it)"
+             : "distance to the limit";
+}
+
 void print_bound(const DepthBound& bound, double eps) {
-  std::printf("bound (%s): distance to the limit after k >= %d %s <= max of\n", bound.source.c_str(), bound.start,
-              bound.steps_per_level > 1 ? "levels" : "steps");
+  std::printf("bound (%s): %s after k >= %d %s <= max of\n", bound.source.c_str(), measured_distance(bound),
+              bound.start, bound.steps_per_level > 1 ? "levels" : "steps");
   for (const DepthTerm& term : bound.terms) {
     DepthBound alone = bound;
     alone.terms = {term};
@@ -73,8 +80,8 @@ nlohmann::ordered_json bound_json(const DepthBound& bound, double eps) {
     terms.push_back({{"amplitude", term.amplitude}, {"rate", term.rate}, {"depth_alone", alone.depth_for(eps)},
                      {"what", term.what}});
   }
-  return {{"source", bound.source}, {"start", bound.start}, {"steps_per_level", bound.steps_per_level},
-          {"terms", terms}};
+  return {{"source", bound.source}, {"measure", to_string(bound.measure)}, {"start", bound.start},
+          {"steps_per_level", bound.steps_per_level}, {"terms", terms}};
 }
 
 nlohmann::ordered_json costs_json(const std::vector<LevelCost>& costs) {
@@ -123,10 +130,13 @@ int run_depth(const DepthCommandOptions& opt) {
 
   std::optional<DepthCheck> check;
   if (opt.verify) {
-    const LevelCost& size = costs.back();
+    // The linear surface is measured at the vertices one level further down.
+    const bool one_more = bound.measure == DepthMeasure::surface_to_limit;
+    const LevelCost size = one_more ? level_costs(file.mesh, scheme, depth + 1).back() : costs.back();
     if (size.faces > kMaxVerifyFaces || size.corners > std::numeric_limits<std::int32_t>::max() ||
         size.vertices > std::numeric_limits<std::int32_t>::max())
-      throw InvalidInputError("--verify: depth " + std::to_string(depth) + " has " + count_of(size.faces, "face", "faces") +
+      throw InvalidInputError("--verify: level " + std::to_string(depth + (one_more ? 1 : 0)) + " has " +
+                              count_of(size.faces, "face", "faces") +
                               " and " + count_of(size.vertices, "vertex", "vertices") + " (" +
                               format_bytes(static_cast<double>(size.bytes)) +
                               "), over the verification budget of 2^28 faces; verify a larger --eps");
@@ -155,9 +165,12 @@ int run_depth(const DepthCommandOptions& opt) {
   }
 
   if (check) {
-    std::printf("\nverify: after %s the largest vertex-to-limit distance is %.6g (bound %.6g, accuracy %g): %s\n",
-                count_of(steps * depth, "step", "steps").c_str(), check->measured, check->bound, opt.eps,
-                within ? "within" : "NOT within");
+    std::printf("\nverify: after %s the largest %s is %.6g (bound %.6g, accuracy %g): %s\n",
+                count_of(steps * depth, "step", "steps").c_str(),
+                bound.measure == DepthMeasure::surface_to_limit
+                    ? "distance of the linear surface to the limit, at the next level's vertices,"
+                    : "vertex-to-limit distance",
+                check->measured, check->bound, opt.eps, within ? "within" : "NOT within");
     if (check->has_previous)
       std::printf("verify: after %s it is %.6g: depth %d %s\n", count_of(steps * (depth - 1), "step", "steps").c_str(),
                   check->measured_previous, depth - 1,
@@ -176,7 +189,7 @@ Command add_depth_command(CLI::App& app) {
   add_read_options(cmd, opt->read);
   cmd->add_option("input", opt->input, "Mesh (.obj, .ply, .off, .gltf, .glb or .stl)")->required();
   add_refinement_options(*cmd, opt->refinement, "Scheme (see 'subdiv schemes'; 'subdiv schemes --matrix' says which have a bound)");
-  cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of a control vertex to the limit surface")
+  cmd->add_option("--eps", opt->eps, "Accuracy: largest allowed distance of a vertex to its limit (interpolating schemes: of the level's linear surface to the limit surface)")
       ->required()
       ->check(positive_number());
   cmd->add_flag("--verify", opt->verify, "Refine to the depth and measure the distances (exit 2 if one exceeds eps)");

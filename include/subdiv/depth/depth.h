@@ -30,7 +30,12 @@ struct DepthOptions {
 /// among the configurations present, the rate of one step being the root of
 /// the analysis's rate over its period (two steps for the sqrt3 split, with
 /// a term for the distances one step in); composite schemes of the quad,
-/// triangle and sqrt3 splits likewise (docs/depth.md). A scheme
+/// triangle and sqrt3 splits likewise. Interpolating schemes with wide
+/// rules on the quad and triangle splits (the Butterflies, Kobbelt's) are
+/// bounded on the level's linear surface against the limit
+/// (DepthMeasure::surface_to_limit): the first steps' largest displacement
+/// of new vertices from it, summed over the steps to come at the slowest
+/// rate (docs/depth.md). A scheme
 /// with a two-step scheme (Scheme::fast_path.two_steps: 4-8) is bounded through it,
 /// in levels of two steps (DepthBound::steps_per_level).
 /// \param mesh The control mesh.
@@ -115,16 +120,21 @@ std::vector<LevelCost> level_costs(const PolygonMesh& mesh, const Scheme& scheme
 struct DepthCheck {
   int depth = 0;          ///< the level checked
   double bound = 0.0;     ///< the bound at `depth`
-  double measured = 0.0;  ///< largest vertex-to-limit distance after `depth` levels
+  /// After `depth` levels, the largest vertex-to-limit distance, or for a
+  /// DepthMeasure::surface_to_limit bound the largest distance of the
+  /// level's linear surface to the next level's vertices (on the limit).
+  double measured = 0.0;
   /// The same one level less (when depth > 0): was depth - 1 already enough?
   bool has_previous = false;
-  double measured_previous = 0.0;  ///< largest vertex-to-limit distance after `depth` - 1 levels
+  double measured_previous = 0.0;  ///< `measured` after `depth` - 1 levels
   Index approximated = 0;  ///< vertices whose limit is only approximated at `depth`
 };
 
 /// Refines \p depth levels (and depth - 1) of bound.steps_per_level steps
 /// each and measures every vertex's distance to its limit position, both
-/// with the scheme's own steps and limits.
+/// with the scheme's own steps and limits; for a
+/// DepthMeasure::surface_to_limit bound, the level's linear surface against
+/// the scheme's next level (whose vertices are on the limit).
 /// \param mesh The control mesh.
 /// \param scheme The scheme.
 /// \param bound The bound checked (its `steps_per_level` and at()).

@@ -11,6 +11,7 @@
 /// applies (the first Catmull-Clark or Doo-Sabin step that makes the mesh
 /// regular enough), `amplitude` is measured on the mesh after those steps.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,9 +26,24 @@ struct DepthTerm {
   double rate = 0.0;      ///< contraction per step, in [0, 1)
 };
 
-/// An a priori bound on the distance of every vertex to its limit position
-/// after k refinement steps: the largest of its terms'
-/// amplitude * rate^(k - start), for k >= start.
+/// What a DepthBound bounds.
+enum class DepthMeasure : std::uint8_t {
+  /// Every vertex's distance to its own limit position.
+  vertex_to_limit,
+  /// The level's linear surface (flat triangles, bilinear quads) against
+  /// the limit surface at the same parameter of the nested splits: the
+  /// measure of interpolating schemes, whose vertices are on the limit.
+  surface_to_limit,
+};
+
+/// The measure's name: "vertex-to-limit" or "surface-to-limit".
+/// \param m The measure.
+/// \return Its name, a static string.
+const char* to_string(DepthMeasure m) noexcept;
+
+/// An a priori bound on the distance to the limit after k refinement steps
+/// (`measure` says of what: every vertex, or the level's linear surface):
+/// the largest of its terms' amplitude * rate^(k - start), for k >= start.
 struct DepthBound {
   /// The bounded scheme's name: set by depth_bound(); empty in the published
   /// bounds (loop_paper_bound(), cheng_catmull_clark_bound(),
@@ -45,8 +61,10 @@ struct DepthBound {
   /// through its two-step scheme (Scheme::fast_path.two_steps: 4-8, whose levels are
   /// then quad splits, two of its steps each).
   int steps_per_level = 1;
+  /// What the bound bounds.
+  DepthMeasure measure = DepthMeasure::vertex_to_limit;
 
-  /// The bound on the vertex-to-limit distance after \p level levels;
+  /// The bound on the distance to the limit after \p level levels;
   /// infinite for level < start (nothing is claimed there).
   /// \param level Levels of the bound (`steps_per_level` refinement steps
   ///        each).
