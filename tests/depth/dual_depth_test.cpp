@@ -15,7 +15,6 @@
 #include "analysis/dual_limit.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/refine/ring_mesh.h"
-#include "subdiv/core/error.h"
 #include "subdiv/depth/depth.h"
 #include "depth/dual_face_bound.h"
 #include "subdiv/depth/mesh_measures.h"
