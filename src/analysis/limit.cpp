@@ -149,6 +149,10 @@ class MaskCache {
   MaskCache(const Scheme& scheme, const RefineOptions& rules, BoundaryInterpolation boundary, CreaseMethod method)
       : scheme_(scheme), rules_(rules), boundary_(boundary), method_(method) {
     rules_.start_level = 0;  // the masks' level is even (sqrt3), as the analysis's ring meshes start
+    // The ring meshes carry no tags: the mesh's own rules, from its tags
+    // where the options leave them open, must reach the analysis.
+    rules_.boundary = boundary;
+    rules_.crease_method = method;
   }
 
   /// Corners: keyed by type and angle under the piecewise-smooth rules
@@ -468,7 +472,7 @@ std::optional<GenericLimit> generic_limit(const GenericLevel& g, Index v, MaskCa
   }
   const bool smooth_interior = kind == VertexKind::interior && rule == VertexRule::smooth && sharp == 0;
   const bool smooth_boundary = kind == VertexKind::boundary && rule == VertexRule::crease && sharp == 2 &&
-                               t.vertex_face_count(v) >= 2;
+                               t.vertex_face_count(v) >= 1;
   const bool interior_crease = kind == VertexKind::interior && rule == VertexRule::crease && sharp == 2;
   if (!canonical || !(smooth_interior || smooth_boundary || interior_crease)) return std::nullopt;
   if (interior_crease) {

@@ -21,6 +21,8 @@
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/hierarchy.h"
+#include "subdiv/rules/bilinear.h"
+#include "subdiv/rules/linear.h"
 
 namespace subdiv {
 
@@ -51,10 +53,12 @@ bool is_regular(const Scheme& scheme, const Configuration& c) {
 // eigenvectors are linear functions, which the regular limit functional
 // also annihilates, so the rate is the next eigenvalue, |lambda_3|
 // (1/4 for Loop and Catmull-Clark, as in the paper's regular bounds).
-double configuration_rate(const Scheme& scheme, const Configuration& c) {
+double configuration_rate(const Scheme& scheme, const Configuration& c, const RefineOptions& rules) {
   AnalysisOptions options;
   options.characteristic_map = false;
   options.masks = false;  // the rate reads the spectrum alone
+  options.rules = rules;  // the rules bounded (piecewise-smooth ones change the matrices)
+  options.rules.start_level = 0;
   const ConfigurationAnalysis a = analyze(scheme, c, options);
   const std::size_t index = is_regular(scheme, c) ? 3 : 1;
   if (a.leading.size() <= index)
@@ -67,7 +71,8 @@ double configuration_rate(const Scheme& scheme, const Configuration& c) {
 
 // The configurations of the mesh's vertices, each with a vertex that has it
 // (kInvalidIndex for the regular ones that refinement creates everywhere).
-std::map<std::pair<int, int>, Index> configurations_present(const PolygonMesh& mesh, const Scheme& scheme) {
+std::map<std::pair<int, int>, Index> configurations_present(const PolygonMesh& mesh, const Scheme& scheme,
+                                                            BoundaryInterpolation boundary) {
   const MeshTopology t(mesh);
   const int regular = regular_faces(scheme);
   std::map<std::pair<int, int>, Index> present{{{static_cast<int>(Configuration::Kind::interior), regular}, kInvalidIndex}};
@@ -78,10 +83,11 @@ std::map<std::pair<int, int>, Index> configurations_present(const PolygonMesh& m
       present.try_emplace({static_cast<int>(Configuration::Kind::interior), faces}, v);
     } else if (t.vertex_kind(v) == VertexKind::boundary) {
       has_boundary = true;
-      // A boundary vertex with one face is a corner under every boundary rule
-      // that moves boundary vertices along the boundary curve.
-      present.try_emplace(faces == 1 ? std::pair{static_cast<int>(Configuration::Kind::corner), 1}
-                                     : std::pair{static_cast<int>(Configuration::Kind::boundary), faces},
+      // A boundary vertex with one face is a corner under edge-and-corner
+      // interpolation; edge-only moves it along the boundary curve.
+      const bool corner = faces == 1 && boundary == BoundaryInterpolation::edge_and_corner;
+      present.try_emplace(corner ? std::pair{static_cast<int>(Configuration::Kind::corner), 1}
+                                 : std::pair{static_cast<int>(Configuration::Kind::boundary), faces},
                           v);
     }
   }
@@ -116,16 +122,18 @@ struct StartLevel {
 // The slowest rate among the configurations present; `extraordinary_only`
 // leaves the regular ones out. A configuration the analysis does not cover
 // is refused naming a vertex that has it.
-WorstRate worst_rate(const StartLevel& level, const Scheme& scheme, bool extraordinary_only) {
+WorstRate worst_rate(const StartLevel& level, const Scheme& scheme, const DepthOptions& options,
+                     bool extraordinary_only) {
   WorstRate worst;
-  for (const auto& [configuration, vertex] : configurations_present(level.mesh, scheme)) {
+  const BoundaryInterpolation boundary = boundary_of(level.mesh, options.refine);
+  for (const auto& [configuration, vertex] : configurations_present(level.mesh, scheme, boundary)) {
     Configuration c;
     c.kind = static_cast<Configuration::Kind>(configuration.first);
     c.k = configuration.second;
     if (extraordinary_only && is_regular(scheme, c)) continue;
     double rate = 0.0;
     try {
-      rate = configuration_rate(scheme, c);
+      rate = configuration_rate(scheme, c, options.refine);
     } catch (const InvalidInputError& e) {
       if (vertex == kInvalidIndex) throw;
       throw InvalidInputError(level.vertex_name(vertex) + ": no depth bound for its configuration: " + e.what() +
@@ -285,7 +293,7 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
 // its vertices as the scheme's own (the same split).
 double linear_surface_distance(const PolygonMesh& level, int level_number, const Scheme& scheme,
                                const RefineOptions& rules, int samples) {
-  const Scheme& flat = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
+  const Scheme& flat = scheme.split == SplitRule::quad ? bilinear_scheme() : linear_scheme();
   RefineOptions steps = rules;
   steps.levels = samples;
   steps.start_level = level_number;
@@ -314,7 +322,7 @@ DepthBound interpolating_depth_bound(const PolygonMesh& mesh, const Scheme& sche
   const std::string name(scheme.name);
   const int level0 = options.refine.start_level;
   const StartLevel start{mesh, mesh.vertex_count(), 0, lines};
-  const WorstRate extraordinary = worst_rate(start, scheme, true);
+  const WorstRate extraordinary = worst_rate(start, scheme, options, true);
   bool has_boundary = false;
   {
     const MeshTopology t(mesh);
@@ -429,7 +437,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
                            ? loop_paper_bound(scheme, distances.max, max_valence(first))
                            : cheng_catmull_clark_bound(max_second_difference(first), start);
     bound.scheme = std::string(scheme.name);
-    const WorstRate extraordinary = worst_rate(level, scheme, true);
+    const WorstRate extraordinary = worst_rate(level, scheme, options, true);
     if (!extraordinary.where.empty()) {
       bound.source = "paper (regular) + analysis (extraordinary)";
       bound.terms.push_back({"largest control-vertex-to-limit distance, contracted by |lambda_1| at " +
@@ -439,7 +447,7 @@ DepthBound depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const Dept
     return bound;
   }
 
-  const WorstRate worst = worst_rate(level, scheme, false);
+  const WorstRate worst = worst_rate(level, scheme, options, false);
   DepthBound bound{std::string(scheme.name),
                    "analysis",
                    start,

@@ -19,6 +19,8 @@
 #include "subdiv/depth/depth.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/io/mesh_io.h"
+#include "subdiv/rules/bilinear.h"
+#include "subdiv/rules/linear.h"
 #include "subdiv/rules/scheme.h"
 #include "depth/depth_test_meshes.h"
 #include "support/test_meshes.h"
@@ -29,7 +31,7 @@ namespace {
 // The largest distance, at the vertices two levels down, between the limit
 // (those vertices) and `level`'s linear surface.
 double surface_distance(const PolygonMesh& level, int number, const Scheme& scheme) {
-  const Scheme& flat = *find_scheme(scheme.split == SplitRule::quad ? "bilinear" : "linear");
+  const Scheme& flat = scheme.split == SplitRule::quad ? bilinear_scheme() : linear_scheme();
   RefineOptions two;
   two.levels = 2;
   two.start_level = number;
