@@ -72,8 +72,9 @@ struct Case {
   double rate = 0.5;
   double final_angle = 0.02;  ///< bound on the angle at the deepest level
   /// Whether every vertex has a limit normal (not at edge-only one-face
-  /// boundary vertices, where the masks of boundary k = 1 under these rules
-  /// give none: `limit` writes a zero normal and says so).
+  /// boundary vertices: boundary k = 1 under edge-only has a simple 1/2
+  /// above a Jordan block at 1/4, so the analysis gives no tangent masks, and
+  /// `limit` writes a zero normal and says so).
   bool normals = true;
 };
 
