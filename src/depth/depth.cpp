@@ -288,9 +288,9 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
 }
 
 // The largest distance between `level`'s linear surface (flat triangles,
-// bilinear quads) and the next level's vertices `samples` levels down, at
-// the same parameter: the linear or bilinear scheme's refinement numbers
-// its vertices as the scheme's own (the same split).
+// bilinear quads) and the scheme's vertices `samples` levels down, at the
+// same parameter: the linear or bilinear scheme's refinement of `level`
+// numbers its vertices as the scheme's own (the same split).
 double linear_surface_distance(const PolygonMesh& level, int level_number, const Scheme& scheme,
                                const RefineOptions& rules, int samples) {
   const Scheme& flat = scheme.split == SplitRule::quad ? bilinear_scheme() : linear_scheme();

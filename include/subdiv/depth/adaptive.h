@@ -79,9 +79,9 @@ struct AdaptiveResult {
 AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
                                const AdaptiveOptions& options = {});
 
-/// Why adaptive_refine() refuses \p scheme whatever the mesh (splits other
-/// than quad and triangle, interpolating schemes with wide masks), or nothing
-/// where it covers it.
+/// Why adaptive_refine() refuses \p scheme whatever the mesh (schemes
+/// without limit positions, splits other than quad and triangle,
+/// interpolating schemes with wide masks), or nothing where it covers it.
 /// \param scheme The scheme.
 /// \param options The refinement rules the scheme is analysed under.
 /// \return The reason, one sentence; nullopt where adaptive refinement applies.

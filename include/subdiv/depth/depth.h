@@ -46,7 +46,8 @@ struct DepthOptions {
 /// \return The bound, with `scheme` set to \p scheme's name.
 /// \throws InvalidInputError if depth_bound_unavailable() gives a reason,
 ///         some vertex's limit is only approximated after four isolation
-///         levels (resolved_limit_distances()),
+///         levels (resolved_limit_distances()), an interpolating scheme's
+///         regular rules give no contraction bound,
 ///         refinement rejects the mesh (as refine() does: TopologyError,
 ///         ValidationError, ParameterError), limit positions fail (as
 ///         limit_positions() does), or a vertex's configuration has no rate
