@@ -78,6 +78,7 @@ py::dict adaptive(const PolygonMesh& mesh, const std::string& scheme_name, doubl
   d["uniform_depth"] = result.uniform_depth;
   d["uniform_faces"] = result.uniform_faces;
   d["transition_faces"] = result.transition_faces;
+  d["approximated"] = result.approximated;
   return d;
 }
 

@@ -108,6 +108,7 @@ class Adaptive:
     uniform_depth: int
     uniform_faces: int
     transition_faces: int
+    approximated: int
 
 def schemes() -> list[dict[str, Any]]: ...
 def scheme(name: str, **parameters: Options) -> dict[str, Any]: ...

@@ -212,9 +212,11 @@ def analyze(scheme, k=None, configuration="interior", corner="convex", angle=Non
 def depth(mesh, scheme="catmull-clark", eps=1e-3, verify=False, **keywords):
     """How many uniform steps bring every vertex within eps of its limit,
     from the control mesh alone (the a priori bound): a dict with depth,
-    bound (the bound there), source ("paper" or "analysis"), start, terms.
+    bound (the bound there), source ("paper" or "analysis"), measure
+    ("vertex-to-limit", or "surface-to-limit" for the interpolating schemes,
+    whose bound is on the level's linear surface), start, terms.
     verify=True also refines to that depth and reports the measured
-    largest vertex-to-limit distance (and one level less)."""
+    largest distance (and one level less)."""
     options, parameters = _split(keywords)
     return _subdiv.depth(_core(mesh, "depth"), scheme, float(eps), bool(verify), options, parameters)
 
@@ -224,10 +226,11 @@ class Adaptive:
     ``source_indices`` (each output vertex is vertex source_indices[i] of
     uniform level source_levels[i]), ``distances`` (to the limit),
     ``uniform_depth`` and ``uniform_faces`` (uniform refinement to the same
-    eps), ``transition_faces``."""
+    eps), ``transition_faces``, ``approximated`` (output vertices whose limit
+    is only approximated: eps is not established there)."""
 
     __slots__ = ("mesh", "source_levels", "source_indices", "distances", "uniform_depth", "uniform_faces",
-                 "transition_faces")
+                 "transition_faces", "approximated")
 
     def __init__(self, d):
         for name in self.__slots__:

@@ -64,10 +64,16 @@ def test_depth_and_adaptive():
     d = subdiv.depth(mesh, "loop", 1e-3, verify=True)
     assert d["bound"] <= 1e-3
     assert d["verified"]["measured"] <= d["bound"]
+    assert d["measure"] == "vertex-to-limit"
     a = subdiv.adaptive(mesh, "loop", 1e-3)
     assert np.all(a.distances <= 1e-3)
     assert a.mesh.face_count <= a.uniform_faces
     assert len(a.source_levels) == a.mesh.vertex_count
+    assert a.approximated == 0
+    # An interpolating scheme's bound is on the level's linear surface.
+    b = subdiv.depth(mesh, "butterfly", 1e-2, verify=True)
+    assert b["measure"] == "surface-to-limit"
+    assert 0 < b["verified"]["measured"] <= b["bound"]
 
 
 def test_curves():
