@@ -81,6 +81,14 @@ BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, sqrt3, "sqrt3")->Args({158, 4, 1})->
 BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, interpolatory_sqrt3, "interpolatory-sqrt3")
     ->Args({158, 4, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Refine_QuadScheme, four_eight, "four-eight")->Args({158, 6, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+// Composite schemes against the native schemes they equal or resemble
+// (level 3 from 50k triangles, 1.35M faces): their masks are composed from
+// the averaging operators as they refine.
+BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, sqrt3_l3, "sqrt3")->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, composite_sqrt3_kobbelt, "composite-sqrt3-kobbelt")
+    ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Refine_TriangleScheme, composite_sqrt3, "composite-sqrt3")
+    ->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
 // Kobbelt's interpolatory quad scheme (quad split, same output as
 // Catmull-Clark's) against Catmull-Clark and, per output face, Loop.
 BENCHMARK_CAPTURE(BM_Refine_QuadScheme, kobbelt, "kobbelt")->Args({158, 3, 1})->Unit(benchmark::kMillisecond)->UseRealTime();
