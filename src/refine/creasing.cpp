@@ -133,6 +133,19 @@ double parent_rule_weight_at(const MeshTopology& topo, BoundaryInterpolation bou
 
 }  // namespace
 
+std::vector<double> vertex_sharpness(const PolygonMesh& mesh, const MeshTopology& topo, BoundaryInterpolation boundary,
+                                     const LevelCreasing& creasing) {
+  std::vector<double> tagged(static_cast<std::size_t>(topo.vertex_count()), 0.0);
+  for (const CornerTag& c : mesh.tags.corners)
+    if (c.vertex >= 0 && c.vertex < topo.vertex_count())
+      tagged[static_cast<std::size_t>(c.vertex)] = std::max(tagged[static_cast<std::size_t>(c.vertex)], c.sharpness);
+  for (Index v = 0; v < topo.vertex_count(); ++v) {
+    const auto vi = static_cast<std::size_t>(v);
+    tagged[vi] = effective_vertex_sharpness(topo, boundary, v, tagged[vi], creasing);
+  }
+  return tagged;
+}
+
 LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo, BoundaryInterpolation boundary,
                                CreaseMethod method) {
   const auto ne = static_cast<std::size_t>(topo.edge_count());

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -19,6 +20,7 @@
 
 #include "subdiv/core/error.h"
 #include "subdiv/mesh/validation.h"
+#include "face_varying.h"
 #include "grid_refine.h"
 #include "overflow_check.h"
 #include "piecewise_smooth.h"
@@ -36,6 +38,10 @@ CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& option
 
 TriangleSubdivision triangle_subdivision_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept {
   return options.triangle_subdivision.value_or(mesh.tags.triangle_subdivision);
+}
+
+FaceVaryingInterpolation face_varying_interpolation_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept {
+  return options.face_varying.value_or(mesh.tags.face_varying_interpolation);
 }
 
 namespace {
@@ -186,6 +192,11 @@ Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, int l
   if (level.child.tags.triangle_subdivision != triangles) {  // the same for the triangle rule
     level.child.tags.triangle_subdivision = triangles;
     level.child.tags.triangle_subdivision_set = true;
+  }
+  const FaceVaryingInterpolation face_varying = face_varying_interpolation_of(parent, options);
+  if (level.child.tags.face_varying_interpolation != face_varying) {  // and for face-varying channels
+    level.child.tags.face_varying_interpolation = face_varying;
+    level.child.tags.face_varying_interpolation_set = true;
   }
   level.flatness = detail::flatness_sites(scheme, topology, creasing, sector_angle, level.map, options);
   std::vector<char> held;
@@ -426,15 +437,32 @@ StencilTable record_stencils(const ParentLevel& view, const Scheme& scheme, cons
   return table;
 }
 
+// The smooth face-varying refinement of `mesh` by `scheme`, or null where
+// its channels are refined linearly (by the split).
+std::shared_ptr<detail::FaceVaryingRefiner> face_varying_refiner(const PolygonMesh& mesh, const Scheme& scheme,
+                                                                 const RefineOptions& options) {
+  const FaceVaryingInterpolation mode = face_varying_interpolation_of(mesh, options);
+  if (mesh.face_varying_channels.empty() || !detail::FaceVaryingRefiner::applies(scheme, mode)) return nullptr;
+  return std::make_shared<detail::FaceVaryingRefiner>(mode, boundary_of(mesh, options), crease_method_of(mesh, options));
+}
+
 // refine_levels()'s step for the fast path: each level's positions and
-// vertex channels straight from the masks, then the flatness modification.
-auto fast_step(BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options) {
-  return [boundary, method, &options](const PolygonMesh& parent, const MeshTopology& topology, int l,
-                                      const Scheme& level_scheme) {
+// vertex channels straight from the masks, then the flatness modification;
+// face-varying channels smoothly where `face_varying` is given.
+auto fast_step(BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options,
+               std::shared_ptr<detail::FaceVaryingRefiner> face_varying = nullptr) {
+  return [boundary, method, &options, face_varying](const PolygonMesh& parent, const MeshTopology& topology, int l,
+                                                    const Scheme& level_scheme) {
     return refine_level(parent, topology, l, level_scheme, boundary, method, options,
-                        [](const ParentLevel& view, const Scheme& step, const PolygonMesh& source, Level& level, bool) {
+                        [&face_varying](const ParentLevel& view, const Scheme& step, const PolygonMesh& source,
+                                        Level& level, bool) {
                           evaluate_fast(source, step, view, level);
                           detail::apply_flatness(level.flatness, level.child);
+                          if (!face_varying) return;
+                          const auto mask_of = [&](Index i, MaskBuilder& mask) {
+                            child_mask(view, step, level.map, i, mask);
+                          };
+                          face_varying->refine(source, view.topology, view.creasing, level.map, mask_of, level.child);
                         });
   };
 }
@@ -601,14 +629,15 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
   PolygonMesh result;
   std::optional<PolygonMesh> by_grids;
   Finish as_grids;
-  if (options.regular_grids && (regular_grid_of(scheme) || regular_triangle_grid_of(scheme)))
+  auto face_varying = face_varying_refiner(mesh, scheme, options);
+  if (options.regular_grids && !face_varying && (regular_grid_of(scheme) || regular_triangle_grid_of(scheme)))
     as_grids = [&](const PolygonMesh& level, const MeshTopology& topology, int remaining) {
       by_grids = detail::refine_as_grids(level, topology, scheme, options, remaining);
       return by_grids.has_value();
     };
   run_with_threads(options.threads, [&] {
-    result = refine_levels(mesh, std::move(coarse), scheme, options, fast_step(boundary, method, options), nullptr,
-                           false, as_grids);
+    result = refine_levels(mesh, std::move(coarse), scheme, options,
+                           fast_step(boundary, method, options, std::move(face_varying)), nullptr, false, as_grids);
   });
   if (by_grids) result = std::move(*by_grids);
   run_with_threads(options.threads,
@@ -632,7 +661,8 @@ Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const 
   };
   PolygonMesh finest;
   run_with_threads(options.threads, [&] {
-    finest = refine_levels(mesh, std::move(coarse), scheme, options, fast_step(boundary, method, options), on_child,
+    finest = refine_levels(mesh, std::move(coarse), scheme, options,
+                           fast_step(boundary, method, options, face_varying_refiner(mesh, scheme, options)), on_child,
                            keep == KeepLevels::all);
   });
   run_with_threads(options.threads, [&] { detail::refuse_overflow(finest.positions, scheme, last); });

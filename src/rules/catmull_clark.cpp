@@ -171,7 +171,7 @@ const Scheme& catmull_clark_scheme() {
       .summary = "approximating, quad split, any polygon mesh; C2 bicubic B-spline on regular quads, C1 elsewhere",
       .citation = "E. Catmull, J. Clark: Recursively generated B-spline surfaces on arbitrary topological meshes, CAD 10(6), 1978",
       .split = SplitRule::quad,
-      .traits = {.paper_depth_bound = PaperDepthBound::cheng_catmull_clark},
+      .traits = {.paper_depth_bound = PaperDepthBound::cheng_catmull_clark, .smooth_face_varying = true},
       .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point,
                 .boundary_curve = &cubic_bspline_curve_scheme()},
       .limit_masks = limit_masks,

@@ -25,7 +25,7 @@
 // subdiv), smooth-triangle Catmull-Clark (likewise), and meshes refine()
 // rejects (degenerate faces). Non-manifold meshes are refined with
 // allow_non_manifold, as OpenSubdiv refines them natively. Genuine
-// disagreements are listed, with what differs, in kKnownDifferences.
+// disagreements are listed, with what differs, in test::known_difference().
 //
 // OpenSubdiv stores sharpness as float; the tags are rounded to float before
 // both libraries see them, so that both refine the same values. (Its Chaikin
@@ -56,6 +56,7 @@
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/scheme.h"
+#include "support/opensubdiv_refiner.h"
 #include "support/opensubdiv_shapes.h"
 #include "support/test_meshes.h"
 
@@ -68,37 +69,6 @@ namespace Sdc = OpenSubdiv::Sdc;
 
 constexpr int kLevels = 3;
 constexpr double kRelativeTolerance = 1e-12;  // of the level-0 bounding-box diagonal
-
-// Genuine disagreements, kept under test: from `level` on, the shape's
-// refinements differ; the levels before it are compared in full. The test
-// fails if the difference disappears, so that this list stays true.
-struct KnownDifference {
-  std::string_view shape;
-  int level;
-  std::string_view why;
-};
-constexpr KnownDifference kKnownDifferences[] = {
-    // Three "pillows": two triangles sharing all three vertices (valence-2
-    // interior vertices). The corner children of such a pair again share all
-    // three vertices; OpenSubdiv keeps the two child edges that lie inside
-    // the two parent faces as distinct edges between the same two vertices,
-    // each with two faces, smooth, each with its own edge point (68 edges at
-    // level 1). subdiv derives edges from vertex pairs, so it merges each
-    // such pair into one edge with four faces, non-manifold hence sharp (59
-    // edges). Level 1 agrees; from level 2 on the counts differ (vertices:
-    // 102 vs 93 at level 2, 358 vs 295 at level 3) and so do positions near
-    // the pillows (at level 2: 8 vertex points by up to 0.031 and 9 edge
-    // points by up to 0.054, bounding-box diagonal 3.9).
-    {"loop_val2_interior", 2,
-     "OpenSubdiv keeps coincident child edges of a two-triangle pillow distinct; subdiv merges them "
-     "into one non-manifold edge"},
-};
-
-const KnownDifference* known_difference(const std::string& shape) {
-  for (const KnownDifference& k : kKnownDifferences)
-    if (k.shape == shape) return &k;
-  return nullptr;
-}
 
 fs::path shape_dir() { return test::opensubdiv_shape_dir(); }
 using test::harness_boundary;
@@ -118,22 +88,6 @@ SchemePair scheme_of(const std::string& shape) {
   return {};
 }
 
-Sdc::Options::VtxBoundaryInterpolation their_boundary(const Tags& tags) {
-  if (!tags.boundary_interpolation_set) return Sdc::Options::VTX_BOUNDARY_NONE;
-  switch (tags.boundary_interpolation) {
-    case BoundaryInterpolation::none: return Sdc::Options::VTX_BOUNDARY_NONE;
-    case BoundaryInterpolation::edge_only: return Sdc::Options::VTX_BOUNDARY_EDGE_ONLY;
-    case BoundaryInterpolation::edge_and_corner: return Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER;
-  }
-  return Sdc::Options::VTX_BOUNDARY_NONE;
-}
-
-// OpenSubdiv stores sharpness as float; give both libraries the same values.
-void round_sharpness_to_float(Tags& tags) {
-  for (CreaseTag& c : tags.creases) c.sharpness = static_cast<double>(static_cast<float>(c.sharpness));
-  for (CornerTag& c : tags.corners) c.sharpness = static_cast<double>(static_cast<float>(c.sharpness));
-}
-
 // PrimvarRefiner's vertex interface, in double precision.
 struct OsdVertex {
   double x = 0.0, y = 0.0, z = 0.0;
@@ -144,55 +98,6 @@ struct OsdVertex {
     z += w * src.z;
   }
 };
-
-std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolygonMesh& mesh, Sdc::SchemeType scheme) {
-  std::vector<int> verts_per_face(static_cast<std::size_t>(mesh.face_count()));
-  for (Index f = 0; f < mesh.face_count(); ++f) verts_per_face[static_cast<std::size_t>(f)] = mesh.face_size(f);
-  const std::vector<Far::Index> face_vertices(mesh.face_indices.begin(), mesh.face_indices.end());
-  std::vector<Far::Index> crease_pairs;
-  std::vector<float> crease_weights;
-  for (const CreaseTag& c : mesh.tags.creases) {
-    crease_pairs.push_back(c.v0);
-    crease_pairs.push_back(c.v1);
-    crease_weights.push_back(static_cast<float>(c.sharpness));
-  }
-  std::vector<Far::Index> corner_vertices;
-  std::vector<float> corner_weights;
-  for (const CornerTag& c : mesh.tags.corners) {
-    corner_vertices.push_back(c.vertex);
-    corner_weights.push_back(static_cast<float>(c.sharpness));
-  }
-  const std::vector<Far::Index> holes(mesh.tags.holes.begin(), mesh.tags.holes.end());
-
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.vertex_count();
-  desc.numFaces = mesh.face_count();
-  desc.numVertsPerFace = verts_per_face.data();
-  desc.vertIndicesPerFace = face_vertices.data();
-  desc.numCreases = static_cast<int>(crease_weights.size());
-  desc.creaseVertexIndexPairs = crease_pairs.data();
-  desc.creaseWeights = crease_weights.data();
-  desc.numCorners = static_cast<int>(corner_weights.size());
-  desc.cornerVertexIndices = corner_vertices.data();
-  desc.cornerWeights = corner_weights.data();
-  desc.numHoles = static_cast<int>(holes.size());
-  desc.holeIndices = holes.data();
-
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(their_boundary(mesh.tags));
-  options.SetCreasingMethod(mesh.tags.crease_method == CreaseMethod::chaikin ? Sdc::Options::CREASE_CHAIKIN
-                                                                            : Sdc::Options::CREASE_UNIFORM);
-  options.SetTriangleSubdivision(mesh.tags.triangle_subdivision == TriangleSubdivision::smooth
-                                     ? Sdc::Options::TRI_SUB_SMOOTH
-                                     : Sdc::Options::TRI_SUB_CATMARK);
-  std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
-      desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(scheme, options)));
-  if (!refiner) return refiner;
-  Far::TopologyRefiner::UniformOptions uniform(kLevels);
-  uniform.fullTopologyInLastLevel = true;
-  refiner->RefineUniform(uniform);
-  return refiner;
-}
 
 // Positions of every level, level by level through PrimvarRefiner.
 std::vector<std::vector<OsdVertex>> their_positions(const Far::TopologyRefiner& refiner, const PolygonMesh& mesh) {
@@ -219,24 +124,6 @@ double bbox_diagonal(const std::vector<Vec3>& points) {
       hi[i] = std::max(hi[i], p[i]);
     }
   return norm(hi - lo);
-}
-
-// Where a child vertex of ours comes from, for messages.
-std::string describe_child(const SplitMap& map, Index i) {
-  if (i < map.edge_points) return "face point of parent face " + std::to_string(i - map.face_points);
-  if (i < map.vertex_points) return "edge point of parent edge " + std::to_string(i - map.edge_points);
-  return "vertex point of parent vertex " + std::to_string(i - map.vertex_points);
-}
-
-bool same_cycle(std::span<const Index> a, Far::ConstIndexArray b) {
-  const int n = static_cast<int>(a.size());
-  if (b.size() != n) return false;
-  for (int r = 0; r < n; ++r) {
-    bool all = true;
-    for (int k = 0; k < n && all; ++k) all = a[static_cast<std::size_t>(k)] == b[(k + r) % n];
-    if (all) return true;
-  }
-  return false;
 }
 
 // OpenSubdiv's smooth triangle rule (TRI_SUB_SMOOTH) has no regression shape
@@ -273,7 +160,7 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   if (smooth_triangles) mesh.tags.triangle_subdivision = TriangleSubdivision::smooth;
   if (const std::string why = unsupported_feature(mesh); !why.empty())
     GTEST_SKIP() << shape << ": not supported by subdiv yet: " << why;
-  round_sharpness_to_float(mesh.tags);
+  test::round_sharpness_to_float(mesh.tags);
 
   RefineOptions options;
   options.levels = 1;
@@ -282,7 +169,7 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   if (const std::string why = rejection(mesh, *scheme.ours, options); !why.empty())
     GTEST_SKIP() << shape << ": " << why;
 
-  const auto refiner = make_refiner(mesh, scheme.theirs);
+  const auto refiner = test::make_refiner(mesh, scheme.theirs, kLevels);
   ASSERT_TRUE(refiner) << "OpenSubdiv rejected " << shape;
   ASSERT_EQ(refiner->GetNumLevels(), kLevels + 1);
 
@@ -295,13 +182,9 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   const auto theirs = their_positions(*refiner, mesh);
   const double tolerance = kRelativeTolerance * bbox_diagonal(mesh.positions);
 
-  // ours -> theirs, vertices and faces of the current level.
-  std::vector<Far::Index> vertex_map(static_cast<std::size_t>(mesh.vertex_count()));
-  std::vector<Far::Index> face_map(static_cast<std::size_t>(mesh.face_count()));
-  for (std::size_t i = 0; i < vertex_map.size(); ++i) vertex_map[i] = static_cast<Far::Index>(i);
-  for (std::size_t i = 0; i < face_map.size(); ++i) face_map[i] = static_cast<Far::Index>(i);
+  test::Correspondence correspondence = test::Correspondence::identity(mesh);  // ours -> theirs
 
-  const KnownDifference* known = known_difference(shape);
+  const test::KnownDifference* known = test::known_difference(shape);
   PolygonMesh parent = std::move(mesh);
   for (int level = 1; level <= kLevels; ++level) {
     SCOPED_TRACE(shape + ", level " + std::to_string(level));
@@ -318,69 +201,17 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
         return;
       }
       ADD_FAILURE() << "known difference no longer observed at level " << level
-                    << ": remove it from kKnownDifferences (" << known->why << ")";
+                    << ": remove it from test::known_difference() (" << known->why << ")";
     }
     ASSERT_EQ(child.vertex_count(), their_child.GetNumVertices());
     ASSERT_EQ(child.face_count(), their_child.GetNumFaces());
 
-    // Child vertex ranges of our split (split.h).
-    const MeshTopology topology(parent);
-    SplitMap map;
-    map.rule = scheme.ours->split;
-    map.face_points = 0;
-    map.edge_points = map.rule == SplitRule::quad ? parent.face_count() : 0;
-    map.vertex_points = map.edge_points + topology.edge_count();
-    map.child_vertex_count = map.vertex_points + parent.vertex_count();
-    ASSERT_EQ(map.child_vertex_count, child.vertex_count());
-    ASSERT_EQ(topology.edge_count(), their_parent.GetNumEdges());
-
-    std::vector<Far::Index> child_vertex_map(static_cast<std::size_t>(child.vertex_count()), -1);
-    if (map.rule == SplitRule::quad)
-      for (Index f = 0; f < parent.face_count(); ++f)
-        child_vertex_map[static_cast<std::size_t>(map.face_point(f))] =
-            their_parent.GetFaceChildVertex(face_map[static_cast<std::size_t>(f)]);
-    for (Index e = 0; e < topology.edge_count(); ++e) {
-      const auto [a, b] = topology.edge_vertices(e);
-      const Far::Index te =
-          their_parent.FindEdge(vertex_map[static_cast<std::size_t>(a)], vertex_map[static_cast<std::size_t>(b)]);
-      ASSERT_NE(te, Far::INDEX_INVALID) << "OpenSubdiv has no edge for our edge " << e << " (" << a << ", " << b << ")";
-      child_vertex_map[static_cast<std::size_t>(map.edge_point(e))] = their_parent.GetEdgeChildVertex(te);
-    }
-    for (Index v = 0; v < parent.vertex_count(); ++v)
-      child_vertex_map[static_cast<std::size_t>(map.vertex_point(v))] =
-          their_parent.GetVertexChildVertex(vertex_map[static_cast<std::size_t>(v)]);
-
-    // The correspondence is one to one.
-    {
-      std::vector<char> hit(child_vertex_map.size(), 0);
-      for (std::size_t i = 0; i < child_vertex_map.size(); ++i) {
-        const Far::Index t = child_vertex_map[i];
-        ASSERT_TRUE(t >= 0 && static_cast<std::size_t>(t) < hit.size() && !hit[static_cast<std::size_t>(t)])
-            << "child vertex " << i << " (" << describe_child(map, static_cast<Index>(i))
-            << ") maps to OpenSubdiv vertex " << t << ", out of range or already taken";
-        hit[static_cast<std::size_t>(t)] = 1;
-      }
-    }
-
-    // Child faces: the same vertices in the same cyclic order.
-    std::vector<Far::Index> child_face_map(static_cast<std::size_t>(child.face_count()), -1);
-    {
-      std::vector<char> taken(child_face_map.size(), 0);
-      std::vector<Index> mapped;
-      for (Index f = 0; f < child.face_count(); ++f) {
-        mapped.clear();
-        for (const Index v : child.face(f)) mapped.push_back(child_vertex_map[static_cast<std::size_t>(v)]);
-        Far::Index match = -1;
-        for (const Far::Index tf : their_child.GetVertexFaces(mapped.front()))
-          if (!taken[static_cast<std::size_t>(tf)] && same_cycle(mapped, their_child.GetFaceVertices(tf))) {
-            match = tf;
-            break;
-          }
-        ASSERT_NE(match, -1) << "our child face " << f << " has no OpenSubdiv counterpart";
-        taken[static_cast<std::size_t>(match)] = 1;
-        child_face_map[static_cast<std::size_t>(f)] = match;
-      }
-    }
+    const SplitMap map = test::split_ranges(parent, scheme.ours->split);
+    test::Correspondence child_map;
+    const std::string mismatch = test::child_correspondence(parent, scheme.ours->split, child, their_parent,
+                                                            their_child, correspondence, child_map);
+    ASSERT_EQ(mismatch, "");
+    const std::vector<Far::Index>& child_vertex_map = child_map.vertices;
 
     // Positions and the channel.
     const std::vector<OsdVertex>& expected = theirs[static_cast<std::size_t>(level)];
@@ -404,14 +235,13 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
       if (!(c == child.positions[ii])) ++channel_mismatches;
     }
     EXPECT_LE(worst, tolerance) << "largest position difference at our vertex " << worst_vertex << " ("
-                                << describe_child(map, worst_vertex) << "), OpenSubdiv vertex "
+                                << test::describe_child(map, worst_vertex) << "), OpenSubdiv vertex "
                                 << child_vertex_map[static_cast<std::size_t>(worst_vertex)] << " (tolerance "
                                 << tolerance << ")";
     EXPECT_LE(worst_channel, tolerance) << "vertex channel differs from OpenSubdiv";
     EXPECT_EQ(channel_mismatches, 0u) << "vertex channel not refined exactly as the positions";
 
-    vertex_map = std::move(child_vertex_map);
-    face_map = std::move(child_face_map);
+    correspondence = std::move(child_map);
     parent = std::move(child);
   }
 }

@@ -129,4 +129,17 @@ VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) noexce
 LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topology, BoundaryInterpolation boundary,
                                CreaseMethod method);
 
+/// Every vertex's sharpness as the rules see it: its corner tag (the
+/// largest), or infinite where it cannot be smooth (an isolated vertex; a
+/// non-manifold vertex other than a crease; a one-face boundary vertex under
+/// edge-and-corner interpolation).
+/// \param mesh the level (its corner tags are read).
+/// \param topology the topology of \p mesh.
+/// \param boundary the boundary interpolation.
+/// \param creasing the level's creasing (compute_creasing()).
+/// \return one sharpness per vertex.
+/// \throws std::bad_alloc if memory runs out.
+std::vector<double> vertex_sharpness(const PolygonMesh& mesh, const MeshTopology& topology,
+                                     BoundaryInterpolation boundary, const LevelCreasing& creasing);
+
 }  // namespace subdiv

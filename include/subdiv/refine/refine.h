@@ -70,6 +70,11 @@ struct RuleOptions {
   /// next to triangles, docs/schemes/catmull-clark.md); the refined levels'
   /// tags then name it.
   std::optional<TriangleSubdivision> triangle_subdivision;
+  /// Overrides the mesh's face-varying interpolation tag (`t
+  /// facevaryinginterpolateboundary`): how face-varying channels are refined
+  /// by the schemes that interpolate them smoothly (SchemeTraits::
+  /// smooth_face_varying); the refined levels' tags then name it.
+  std::optional<FaceVaryingInterpolation> face_varying;
 };
 
 /// The boundary interpolation refinement uses on `mesh`: the option's
@@ -90,6 +95,12 @@ CreaseMethod crease_method_of(const PolygonMesh& mesh, const RuleOptions& option
 /// \param options the rule choices.
 /// \return the triangle rule.
 TriangleSubdivision triangle_subdivision_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept;
+/// The face-varying interpolation refinement uses on `mesh`: the option's
+/// override, else the mesh's tag.
+/// \param mesh the mesh (its tags are read).
+/// \param options the rule choices.
+/// \return the face-varying interpolation.
+FaceVaryingInterpolation face_varying_interpolation_of(const PolygonMesh& mesh, const RuleOptions& options) noexcept;
 
 /// A refinement: the rule choices, and the run controls below, none of
 /// which changes the surface made.

@@ -411,6 +411,11 @@ struct SchemeTraits {
   int analysis_rings = 0;
   /// The published depth bound that applies, if any.
   PaperDepthBound paper_depth_bound = PaperDepthBound::none;
+  /// Face-varying channels follow the face-varying interpolation option
+  /// (Tags::face_varying_interpolation) as OpenSubdiv's, with this scheme's
+  /// masks where a channel is continuous and the cubic B-spline along its
+  /// seams; otherwise they are interpolated linearly whatever it says.
+  bool smooth_face_varying = false;
 };
 
 /// The masks that make one level's child vertices (which ones a split
