@@ -130,6 +130,11 @@ RefineOptions refine_options(const py::dict& options) {
     } else if (key == "triangle_subdivision") {
       o.triangle_subdivision = enum_named(key, value.cast<std::string>(),
                                           {TriangleSubdivision::catmark, TriangleSubdivision::smooth});
+    } else if (key == "face_varying") {
+      o.face_varying = enum_named(key, value.cast<std::string>(),
+                                  {FaceVaryingInterpolation::none, FaceVaryingInterpolation::corners_only,
+                                   FaceVaryingInterpolation::corners_plus1, FaceVaryingInterpolation::corners_plus2,
+                                   FaceVaryingInterpolation::boundaries, FaceVaryingInterpolation::all});
     } else if (key == "flatness") {
       o.flatness = value.cast<double>();
     } else if (key == "allow_non_manifold") {
@@ -141,7 +146,7 @@ RefineOptions refine_options(const py::dict& options) {
       o.regular_grids = value.cast<bool>();
     } else {
       throw InvalidInputError("unknown option '" + key +
-                              "' (boundary, boundary_rules, corner_angles, crease_method, triangle_subdivision, flatness, "
+                              "' (boundary, boundary_rules, corner_angles, crease_method, triangle_subdivision, face_varying, flatness, "
                               "allow_non_manifold, threads, regular_grids)");
     }
   }

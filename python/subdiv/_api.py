@@ -10,8 +10,8 @@ from ._mesh import Mesh, _array
 
 # The rule and run options every refining call takes; any other keyword is a
 # scheme parameter (tension; degree, alpha, beta, valence_weights).
-_OPTION_NAMES = ("boundary", "boundary_rules", "corner_angles", "crease_method", "triangle_subdivision", "flatness",
-                 "allow_non_manifold", "threads", "regular_grids")
+_OPTION_NAMES = ("boundary", "boundary_rules", "corner_angles", "crease_method", "triangle_subdivision",
+                 "face_varying", "flatness", "allow_non_manifold", "threads", "regular_grids")
 
 #: The kinds of a child vertex's parent element, indexed by Level.origins' codes.
 ORIGIN_KINDS = ("vertex", "edge", "face", "corner", "boundary_point")
@@ -112,8 +112,11 @@ def refine(mesh, scheme="catmull-clark", levels=1, keep="last", **keywords):
     mesh's tag), boundary_rules ("standard", "piecewise-smooth"),
     corner_angles ("fixed", "measured"), crease_method ("uniform",
     "chaikin"), triangle_subdivision ("catmark", "smooth": Catmull-Clark's
-    edge rule next to triangles; default: the mesh's tag), flatness,
-    allow_non_manifold. Run options: threads (0: all
+    edge rule next to triangles; default: the mesh's tag), face_varying
+    ("none", "corners-only", "corners-plus1", "corners-plus2", "boundaries",
+    "all": how Catmull-Clark and Loop refine face-varying channels, as
+    OpenSubdiv's option; default: the mesh's tag, else "all", linear),
+    flatness, allow_non_manifold. Run options: threads (0: all
     cores; the result does not depend on it), regular_grids. Any other
     keyword is a scheme parameter: tension (butterfly, kobbelt, ...),
     degree, alpha, beta, valence_weights (gcc, midpoint).

@@ -122,6 +122,19 @@ cmp -s "$work/pyramid_catmark.obj" "$work/pyramid_smooth.obj" && fail "--triangl
 grep -q "^t smoothtriangles 0/0/1 smooth" "$work/pyramid_smooth.obj" && pass || fail "--triangle-rule: the output's tag does not name the rule"
 run triangle-rule-loop 1 refine "$work/pyramid.obj" -s loop -o "$work/x.obj" --triangle-rule smooth &&
   stderr_has triangle-rule-loop "--triangle-rule applies to catmull-clark"
+# Face-varying channels: --face-varying smooths Spot's UVs (the default is linear), names the option in
+# the output's tags, and applies to the schemes that refine them smoothly.
+spot="$meshes/spot_control_mesh.obj"
+run face-varying-all 0 refine "$spot" -l 2 -o "$work/spot_uv_all.obj"
+run face-varying-none 0 refine "$spot" -l 2 -o "$work/spot_uv_none.obj" --face-varying none
+[ "$(grep '^v ' "$work/spot_uv_all.obj")" = "$(grep '^v ' "$work/spot_uv_none.obj")" ] && pass ||
+  fail "--face-varying changed the positions"
+[ "$(grep '^vt ' "$work/spot_uv_all.obj")" != "$(grep '^vt ' "$work/spot_uv_none.obj")" ] && pass ||
+  fail "--face-varying none did not change the UVs"
+grep -q "^t facevaryinginterpolateboundary 1/0/0 0" "$work/spot_uv_none.obj" && pass ||
+  fail "--face-varying: the output's tag does not name the option"
+run face-varying-butterfly 1 refine "$spot" -s butterfly --triangulate -o "$work/x.obj" --face-varying none &&
+  stderr_has face-varying-butterfly "--face-varying applies to the schemes that refine face-varying channels smoothly"
 [ "$(sha256sum "$work/in.obj")" = "$before" ] && pass || fail "the input file changed"
 leftovers=$(find "$work" -name '*.tmp-*' | wc -l)
 [ "$leftovers" -eq 0 ] && pass || fail "temporary files left behind"

@@ -225,6 +225,17 @@ def test_triangle_subdivision_option():
         subdiv.refine(pyramid, "catmull-clark", 1, triangle_subdivision="round")
 
 
+def test_face_varying_option():
+    # Spot's UVs: linear by default, smooth with face_varying="none"; the positions do not change.
+    mesh = subdiv.read(MESHES / "spot_control_mesh.obj")
+    linear = subdiv.refine(mesh, "catmull-clark", 2).mesh
+    smooth = subdiv.refine(mesh, "catmull-clark", 2, face_varying="none").mesh
+    np.testing.assert_array_equal(linear.points, smooth.points)
+    assert not np.array_equal(linear.face_varying_channels["uv"][0], smooth.face_varying_channels["uv"][0])
+    with pytest.raises(subdiv.InvalidInputError, match="face_varying='smooth'"):
+        subdiv.refine(mesh, "catmull-clark", 1, face_varying="smooth")
+
+
 def test_composite_specs():
     # A scheme written as averaging operators: Loop's, spelled out.
     mesh = subdiv.read(MESHES / "tetrahedron.obj")

@@ -55,12 +55,6 @@ struct OsdValue {
   }
 };
 
-constexpr FaceVaryingInterpolation kModes[] = {
-    FaceVaryingInterpolation::none,          FaceVaryingInterpolation::corners_only,
-    FaceVaryingInterpolation::corners_plus1, FaceVaryingInterpolation::corners_plus2,
-    FaceVaryingInterpolation::boundaries,    FaceVaryingInterpolation::all,
-};
-
 struct Case {
   std::string shape;
   FaceVaryingInterpolation mode = FaceVaryingInterpolation::all;
@@ -83,7 +77,7 @@ std::vector<Case> cases() {
     }
   std::sort(shapes.begin(), shapes.end());
   for (const std::string& s : shapes)
-    for (const FaceVaryingInterpolation mode : kModes) out.push_back({s, mode});
+    for (const FaceVaryingInterpolation mode : kFaceVaryingInterpolations) out.push_back({s, mode});
   if (out.empty()) out.push_back({"collection_absent", FaceVaryingInterpolation::all});  // the test skips
   return out;
 }

@@ -260,7 +260,8 @@ Command add_refine_command(CLI::App& app) {
                 "Refine even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(
       "Vertex data (colours, any per-vertex channel) is refined with the scheme's\n"
-      "masks; face-varying data (UVs) linearly within faces. Curve schemes\n"
+      "masks; face-varying data (UVs) as --face-varying says (catmull-clark,\n"
+      "loop, loop-warren), else linearly within faces. Curve schemes\n"
       "(cubic-bspline, chaikin, four-point) refine the polylines of a file\n"
       "without faces (OBJ 'l' lines; closed when the last index is the first).\n"
       "Examples:\n"

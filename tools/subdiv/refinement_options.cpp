@@ -49,6 +49,13 @@ void add_refinement_options(CLI::App& cmd, RefinementOptionValues& values, const
                  "catmull-clark: the edge rule next to triangles, overriding the file's smoothtriangles tag: catmark, "
                  "or OpenSubdiv's smooth (default: the tag, else catmark)")
       ->check(CLI::IsMember({to_string(TriangleSubdivision::catmark), to_string(TriangleSubdivision::smooth)}));
+  std::vector<std::string> face_varying_names;
+  for (const FaceVaryingInterpolation f : kFaceVaryingInterpolations) face_varying_names.push_back(to_string(f));
+  cmd.add_option("--face-varying", values.face_varying,
+                 "catmull-clark, loop and loop-warren: how face-varying channels (UV seams) are refined, overriding the file's "
+                 "facevaryinginterpolateboundary tag, as OpenSubdiv's option: none (smooth everywhere), corners-only, "
+                 "corners-plus1, corners-plus2, boundaries, all (linear; default: the tag, else all)")
+      ->check(CLI::IsMember(face_varying_names));
   add_rule_options(cmd, values.rules);
   cmd.add_option("--crease", values.creases,
                  "Tag edge A,B (0-based vertices) as infinitely sharp (repeatable); quasi-4-8 does not smooth it")
@@ -97,12 +104,21 @@ void apply_refinement_options(const RefinementOptionValues& values, const Scheme
                                        ? TriangleSubdivision::smooth
                                        : TriangleSubdivision::catmark;
   }
+  if (!values.face_varying.empty()) {
+    if (!scheme.traits.smooth_face_varying)
+      throw InvalidInputError("--face-varying applies to the schemes that refine face-varying channels smoothly (" +
+                              names_where([](const Scheme& s) { return s.traits.smooth_face_varying; }) +
+                              "), not to " + std::string(scheme.name) + ", which refines them linearly");
+    for (const FaceVaryingInterpolation f : kFaceVaryingInterpolations)
+      if (values.face_varying == to_string(f)) options.face_varying = f;
+  }
 }
 
 const char* surface_option_given(const RefinementOptionValues& values) {
   if (!values.boundary.empty()) return "--boundary";
   if (!values.crease_method.empty()) return "--crease-method";
   if (!values.triangle_rule.empty()) return "--triangle-rule";
+  if (!values.face_varying.empty()) return "--face-varying";
   if (values.allow_non_manifold) return "--allow-non-manifold";
   if (values.triangulate) return "--triangulate";
   if (values.rules.boundary_rules != "standard") return "--boundary-rules";

@@ -26,6 +26,7 @@ struct RefinementOptionValues {
   std::string boundary;        ///< edge-only, edge-and-corner, or empty: the file's tag
   std::string crease_method;   ///< empty: the file's tag
   std::string triangle_rule;   ///< catmark or smooth; empty: the file's tag
+  std::string face_varying;    ///< a FaceVaryingInterpolation name; empty: the file's tag
   RuleOptionValues rules;
   std::vector<std::string> creases;  ///< --crease A,B: infinitely sharp edge tags
   bool allow_non_manifold = false;

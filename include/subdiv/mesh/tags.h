@@ -77,6 +77,13 @@ enum class FaceVaryingInterpolation {
   all,            ///< linear everywhere (FVAR_LINEAR_ALL)
 };
 
+/// Every FaceVaryingInterpolation, in declaration order.
+inline constexpr FaceVaryingInterpolation kFaceVaryingInterpolations[] = {
+    FaceVaryingInterpolation::none,          FaceVaryingInterpolation::corners_only,
+    FaceVaryingInterpolation::corners_plus1, FaceVaryingInterpolation::corners_plus2,
+    FaceVaryingInterpolation::boundaries,    FaceVaryingInterpolation::all,
+};
+
 /// OpenSubdiv's creasing method for semi-sharp creases.
 enum class CreaseMethod {
   uniform,  ///< every level subtracts 1 from the sharpness (CREASE_UNIFORM)
@@ -114,8 +121,9 @@ struct Tags {
   /// How boundary vertices and edges are interpolated (refinement rejects
   /// BoundaryInterpolation::none).
   BoundaryInterpolation boundary_interpolation = BoundaryInterpolation::edge_and_corner;
-  /// OpenSubdiv's face-varying interpolation option; kept and written back.
-  /// Refinement interpolates face-varying data linearly whatever it says.
+  /// OpenSubdiv's face-varying interpolation option: how the schemes with
+  /// SchemeTraits::smooth_face_varying refine face-varying channels (the
+  /// others refine them linearly); kept and written back.
   FaceVaryingInterpolation face_varying_interpolation = FaceVaryingInterpolation::all;
   /// How semi-sharp creases lose sharpness from level to level.
   CreaseMethod crease_method = CreaseMethod::uniform;
