@@ -161,8 +161,10 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
                      const SourceLines* lines = nullptr);
 
 /// The mesh after options.levels uniform steps: positions and every vertex
-/// channel through the scheme's masks, face-varying channels linearly within
-/// faces, tags propagated. Validates the input first (check_refinable), with
+/// channel through the scheme's masks, face-varying channels as
+/// face_varying_interpolation_of() says for the schemes with
+/// SchemeTraits::smooth_face_varying (linearly within faces otherwise), tags
+/// propagated. Validates the input first (check_refinable), with
 /// `lines` naming the file and lines in its errors. Exceptions thrown by
 /// options.on_level propagate.
 /// \param mesh the mesh to refine, at level options.start_level.
