@@ -373,7 +373,7 @@ void analyse(const MeshTopology& t, const FaceVaryingChannel& ch, const LevelCre
 }
 
 // The value of vertex w around an anchor: in the first of `corners`' faces
-// that holds w.
+// that holds w (else, for a mask reaching further, w's first value).
 Index value_near(const MeshTopology& t, const FaceVaryingChannel& ch, std::span<const Index> corners, Index w) {
   for (const Index c : corners) {
     const Index f = t.corner_face(c);
@@ -381,7 +381,7 @@ Index value_near(const MeshTopology& t, const FaceVaryingChannel& ch, std::span<
     for (Index d = first; d < first + n; ++d)
       if (t.corner_vertex(d) == w) return ch.indices[at(d)];
   }
-  return kInvalidIndex;
+  return ch.indices[at(t.vertex_corners(w).front())];
 }
 
 void add_weighted(const FaceVaryingChannel& ch, Index value, double w, double* out) {
