@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "subdiv/core/error.h"
+#include "subdiv/io/mesh_io.h"
 #include "subdiv/refine/hierarchy.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/butterfly.h"
@@ -185,6 +186,20 @@ TEST(FaceVarying, OptionOverridesTheTag) {
   EXPECT_EQ(by_option.face_varying_channels[0].values, by_tag.face_varying_channels[0].values);
   EXPECT_NE(by_option.face_varying_channels[0].values,
             refined(mesh, catmull_clark_scheme(), FaceVaryingInterpolation::all, 2).face_varying_channels[0].values);
+}
+
+// A file's tag chooses the option (tests/data/uv_seams.obj: corners-plus1,
+// with a seam, a semi-sharp crease and a corner).
+TEST(FaceVarying, TheFilesTagChoosesTheOption) {
+  const PolygonMesh mesh = read_mesh(test::data_path("uv_seams.obj")).mesh;
+  ASSERT_EQ(mesh.tags.face_varying_interpolation, FaceVaryingInterpolation::corners_plus1);
+  RefineOptions options;
+  options.levels = 3;
+  const PolygonMesh by_tag = refine(mesh, catmull_clark_scheme(), options);
+  options.face_varying = FaceVaryingInterpolation::corners_plus1;
+  EXPECT_EQ(by_tag.face_varying_channels.at(0).values, refine(mesh, catmull_clark_scheme(), options).face_varying_channels.at(0).values);
+  options.face_varying = FaceVaryingInterpolation::all;
+  EXPECT_NE(by_tag.face_varying_channels.at(0).values, refine(mesh, catmull_clark_scheme(), options).face_varying_channels.at(0).values);
 }
 
 // Schemes without the trait refine face-varying channels linearly whatever

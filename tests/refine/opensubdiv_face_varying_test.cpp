@@ -25,10 +25,13 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "subdiv/io/mesh_io.h"
+#include "subdiv/mesh/topology.h"
 #include "subdiv/refine/hierarchy.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/catmull_clark.h"
@@ -96,36 +99,19 @@ double diagonal(const FaceVaryingChannel& ch) {
   return std::sqrt(sum);
 }
 
-class OpenSubdivFaceVarying : public ::testing::TestWithParam<Case> {};
-
-TEST_P(OpenSubdivFaceVarying, RefinesLikeOpenSubdiv) {
-  const Case& c = GetParam();
-  const fs::path path = test::opensubdiv_shape_dir() / (c.shape + ".obj");
-  if (!fs::exists(path))
-    GTEST_SKIP() << "OpenSubdiv regression shapes not found at " << test::opensubdiv_shape_dir();
-  const bool loop = c.shape.starts_with("loop_");
-  const Scheme& scheme = loop ? loop_scheme() : catmull_clark_scheme();
-
-  PolygonMesh mesh = read_mesh(path).mesh;
-  if (const std::string why = test::unsupported_feature(mesh); !why.empty())
-    GTEST_SKIP() << c.shape << ": not supported by subdiv yet: " << why;
-  test::round_sharpness_to_float(mesh.tags);
-  mesh.face_varying_channels.resize(1);
-  const FaceVaryingChannel& channel = mesh.face_varying_channels[0];
+// Refines `mesh` (its first face-varying channel, under `mode`) with both
+// libraries over kLevels levels and expects every child face corner's value
+// to agree, up to `known`'s level where given.
+void expect_agreement(const std::string& name, const PolygonMesh& mesh, const Scheme& scheme,
+                      FaceVaryingInterpolation mode, const RefineOptions& options,
+                      const test::KnownDifference* known) {
+  const FaceVaryingChannel& channel = mesh.face_varying_channels.at(0);
   ASSERT_GT(channel.components, 0);
   ASSERT_LE(channel.components, 4);
-  mesh.tags.face_varying_interpolation = c.mode;
-
-  RefineOptions options;
-  options.levels = kLevels;
-  options.boundary = test::harness_boundary(mesh.tags);
-  options.allow_non_manifold = true;
-  if (const std::string why = test::rejection(mesh, scheme, options); !why.empty())
-    GTEST_SKIP() << c.shape << ": " << why;
-
-  const auto refiner = test::make_refiner(mesh, loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, kLevels, &channel,
-                                          c.mode);
-  ASSERT_TRUE(refiner) << "OpenSubdiv rejected " << c.shape;
+  const bool loop = scheme.split == SplitRule::triangle;
+  const auto refiner =
+      test::make_refiner(mesh, loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, kLevels, &channel, mode);
+  ASSERT_TRUE(refiner) << "OpenSubdiv rejected " << name;
 
   // Their values, level by level.
   std::vector<std::vector<OsdValue>> theirs(kLevels + 1);
@@ -141,19 +127,21 @@ TEST_P(OpenSubdivFaceVarying, RefinesLikeOpenSubdiv) {
     primvar.InterpolateFaceVarying(l, src, dst, 0);
   }
 
-  const Hierarchy ours = refine_hierarchy(mesh, scheme, options, KeepLevels::all);
+  RefineOptions ours_options = options;
+  ours_options.levels = kLevels;
+  ours_options.face_varying = mode;
+  const Hierarchy ours = refine_hierarchy(mesh, scheme, ours_options, KeepLevels::all);
   ASSERT_EQ(ours.levels.size(), static_cast<std::size_t>(kLevels + 1));
   const double tolerance = kRelativeTolerance * std::max(1.0, diagonal(channel));
 
-  const test::KnownDifference* known = test::known_difference(c.shape);
   test::Correspondence correspondence = test::Correspondence::identity(mesh);
   for (int l = 1; l <= kLevels; ++l) {
-    SCOPED_TRACE(c.shape + ", level " + std::to_string(l));
+    SCOPED_TRACE(name + ", level " + std::to_string(l));
     const PolygonMesh& parent = ours.levels[static_cast<std::size_t>(l) - 1].mesh;
     const PolygonMesh& child = ours.levels[static_cast<std::size_t>(l)].mesh;
     const Far::TopologyLevel& their_child = refiner->GetLevel(l);
     if (known && l >= known->level) {  // the position agreement test checks that it persists
-      std::cout << "[   NOTE   ] " << c.shape << ": known difference from level " << known->level << " (compared levels 1-"
+      std::cout << "[   NOTE   ] " << name << ": known difference from level " << known->level << " (compared levels 1-"
                 << l - 1 << "): " << known->why << "\n";
       return;
     }
@@ -176,10 +164,11 @@ TEST_P(OpenSubdivFaceVarying, RefinesLikeOpenSubdiv) {
         while (r < their_vertices.size() && their_vertices[r] != tv) ++r;
         ASSERT_LT(r, their_vertices.size());
         const OsdValue& want = theirs[static_cast<std::size_t>(l)][static_cast<std::size_t>(their_values[r])];
-        const std::size_t ours_at =
-            static_cast<std::size_t>(got.indices[static_cast<std::size_t>(child.face_offsets[static_cast<std::size_t>(f)]) + j]) * k;
+        const std::size_t corner = static_cast<std::size_t>(child.face_offsets[static_cast<std::size_t>(f)]) + j;
+        const std::size_t ours_at = static_cast<std::size_t>(got.indices[corner]) * k;
         double d2 = 0.0;
-        for (std::size_t i = 0; i < k; ++i) d2 += (got.values[ours_at + i] - want.v[i]) * (got.values[ours_at + i] - want.v[i]);
+        for (std::size_t i = 0; i < k; ++i)
+          d2 += (got.values[ours_at + i] - want.v[i]) * (got.values[ours_at + i] - want.v[i]);
         const double d = std::sqrt(d2);
         if (!(d <= worst)) {
           worst = d;
@@ -190,9 +179,89 @@ TEST_P(OpenSubdivFaceVarying, RefinesLikeOpenSubdiv) {
         }
       }
     }
-    EXPECT_LE(worst, tolerance) << "largest difference at our " << where << ", mode " << to_string(c.mode);
+    EXPECT_LE(worst, tolerance) << "largest difference at our " << where << ", mode " << to_string(mode);
     correspondence = std::move(child_map);
   }
+}
+
+class OpenSubdivFaceVarying : public ::testing::TestWithParam<Case> {};
+
+TEST_P(OpenSubdivFaceVarying, RefinesLikeOpenSubdiv) {
+  const Case& c = GetParam();
+  const fs::path path = test::opensubdiv_shape_dir() / (c.shape + ".obj");
+  if (!fs::exists(path))
+    GTEST_SKIP() << "OpenSubdiv regression shapes not found at " << test::opensubdiv_shape_dir();
+  const Scheme& scheme = c.shape.starts_with("loop_") ? loop_scheme() : catmull_clark_scheme();
+  PolygonMesh mesh = read_mesh(path).mesh;
+  if (const std::string why = test::unsupported_feature(mesh); !why.empty())
+    GTEST_SKIP() << c.shape << ": not supported by subdiv yet: " << why;
+  test::round_sharpness_to_float(mesh.tags);
+  mesh.face_varying_channels.resize(1);
+  RefineOptions options;
+  options.boundary = test::harness_boundary(mesh.tags);
+  options.allow_non_manifold = true;
+  if (const std::string why = test::rejection(mesh, scheme, options); !why.empty())
+    GTEST_SKIP() << c.shape << ": " << why;
+  expect_agreement(c.shape, mesh, scheme, c.mode, options, test::known_difference(c.shape));
+}
+
+// The shapes with seams again, with random semi-sharp creases and corners
+// added (sharpness 0.5 to 3.75, dyadic; at most two semi-sharp features at a
+// vertex, so that OpenSubdiv's float averages of decaying sharpness are
+// exact), in every option: the semi-sharp and dependent-sharpness rules on
+// seams beyond what the regression shapes tag.
+TEST(OpenSubdivFaceVaryingRandomSharpness, RefinesLikeOpenSubdiv) {
+  const char* shapes[] = {"catmark_fvar_bound0", "catmark_fvar_bound1", "catmark_fvar_bound2",
+                          "catmark_fvar_project0", "catmark_quadstrips", "loop_fvar_bound0",
+                          "loop_fvar_bound1", "loop_fvar_bound3"};
+  constexpr double kSharpness[] = {0.5, 1.0, 1.5, 2.0, 2.5, 3.75};
+  int compared = 0;
+  for (const char* shape : shapes) {
+    const fs::path path = test::opensubdiv_shape_dir() / (std::string(shape) + ".obj");
+    if (!fs::exists(path)) continue;
+    const Scheme& scheme = std::string(shape).starts_with("loop_") ? loop_scheme() : catmull_clark_scheme();
+    for (unsigned seed = 1; seed <= 2; ++seed) {
+      PolygonMesh mesh = read_mesh(path).mesh;
+      mesh.face_varying_channels.resize(1);
+      std::mt19937 random(seed);
+      const MeshTopology topology(mesh);
+      // Semi-sharp features per vertex; vertices and edges the shape tags
+      // already get no new tag (its sharpness need not be dyadic).
+      std::vector<int> features(static_cast<std::size_t>(mesh.vertex_count()), 0);
+      std::vector<char> tagged(static_cast<std::size_t>(topology.edge_count()), 0);
+      for (const CreaseTag& c : mesh.tags.creases) {
+        features[static_cast<std::size_t>(c.v0)] = features[static_cast<std::size_t>(c.v1)] = 2;
+        if (const Index e = topology.find_edge(c.v0, c.v1); e != kInvalidIndex) tagged[static_cast<std::size_t>(e)] = 1;
+      }
+      for (const CornerTag& c : mesh.tags.corners) features[static_cast<std::size_t>(c.vertex)] = 2;
+      for (Index e = 0; e < topology.edge_count(); ++e) {
+        const auto [a, b] = topology.edge_vertices(e);
+        if (random() % 4 != 0 || tagged[static_cast<std::size_t>(e)] || features[static_cast<std::size_t>(a)] >= 2 ||
+            features[static_cast<std::size_t>(b)] >= 2)
+          continue;
+        mesh.tags.creases.push_back({a, b, kSharpness[random() % std::size(kSharpness)]});
+        ++features[static_cast<std::size_t>(a)];
+        ++features[static_cast<std::size_t>(b)];
+      }
+      for (Index v = 0; v < mesh.vertex_count(); ++v)
+        if (random() % 8 == 0 && features[static_cast<std::size_t>(v)] < 2) {
+          CornerTag corner;
+          corner.vertex = v;
+          corner.sharpness = kSharpness[random() % std::size(kSharpness)];
+          mesh.tags.corners.push_back(corner);
+          ++features[static_cast<std::size_t>(v)];
+        }
+      test::round_sharpness_to_float(mesh.tags);  // the shape's own tags (0.9, 2.1, 0.1 on catmark_fvar_bound2)
+      RefineOptions options;
+      options.boundary = test::harness_boundary(mesh.tags);
+      for (const FaceVaryingInterpolation mode : kFaceVaryingInterpolations) {
+        expect_agreement(std::string(shape) + " (seed " + std::to_string(seed) + ", " + to_string(mode) + ")", mesh,
+                         scheme, mode, options, nullptr);
+        ++compared;
+      }
+    }
+  }
+  if (compared == 0) GTEST_SKIP() << "OpenSubdiv regression shapes not found at " << test::opensubdiv_shape_dir();
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
