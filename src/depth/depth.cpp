@@ -16,11 +16,13 @@
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/analysis/regular_smoothness.h"
+#include "subdiv/analysis/spectrum.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/depth_bound.h"
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/hierarchy.h"
+#include "subdiv/refine/subdivision_matrix.h"
 #include "subdiv/rules/bilinear.h"
 #include "subdiv/rules/linear.h"
 
@@ -371,14 +373,18 @@ DepthBound interpolating_depth_bound(const PolygonMesh& mesh, const Scheme& sche
 // Butterfly schemes, Kobbelt's): the limit mask at the regular configuration is the
 // centre alone, yet new vertices leave the control mesh's faces (unlike the
 // linear schemes, whose control mesh is its own limit).
+// Only the regular configuration's invariant matrix and its limit mask are
+// read (not the full analysis: its spectrum and the regular rules'
+// smoothness take seconds for the wide rotating schemes).
 bool interpolates_with_wide_masks(const Scheme& scheme, const DepthOptions& options) {
-  AnalysisOptions analysis;
-  analysis.characteristic_map = false;
-  analysis.rules = options.refine;
-  const ConfigurationAnalysis a =
-      analyze(scheme, {Configuration::Kind::interior, regular_faces(scheme), CornerType::convex}, analysis);
-  if (!a.limit_mask || a.matrix.rings <= 1) return false;
-  const Eigen::VectorXd& mask = *a.limit_mask;
+  const AnalysisOptions defaults;
+  const LocalSubdivisionMatrix m = invariant_subdivision_matrix(
+      scheme, {Configuration::Kind::interior, regular_faces(scheme), CornerType::convex}, defaults.max_rings,
+      options.refine);
+  if (!m.invariant || m.rings <= 1) return false;
+  const std::optional<Eigen::VectorXd> limit = left_eigenvector(m.S, 1.0, defaults.tolerance);
+  if (!limit) return false;
+  const Eigen::VectorXd& mask = *limit;
   return std::abs(mask[0] - 1.0) < 1e-9 && mask.tail(mask.size() - 1).cwiseAbs().maxCoeff() < 1e-9;
 }
 
