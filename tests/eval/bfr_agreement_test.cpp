@@ -11,8 +11,6 @@
 
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
-#include <opensubdiv/far/topologyDescriptor.h>
-#include <opensubdiv/far/topologyRefinerFactory.h>
 
 #include <cmath>
 #include <iostream>
@@ -25,6 +23,7 @@
 #include "refine/grid_test_support.h"
 #include "subdiv/eval/limit_evaluator.h"
 #include "subdiv/mesh/topology.h"
+#include "support/opensubdiv_refiner.h"
 #include "support/refine_options.h"
 #include "support/scheme_by_name.h"
 #include "support/test_meshes.h"
@@ -40,31 +39,12 @@ using grid_test::diagonal;
 
 using test::scheme;
 
+// The unrefined refiner, with the boundary interpolation of the mesh's tags.
 std::unique_ptr<Far::TopologyRefiner> base_refiner(const PolygonMesh& mesh, Sdc::SchemeType type) {
-  std::vector<int> sizes;
-  for (Index f = 0; f < mesh.face_count(); ++f) sizes.push_back(mesh.face_size(f));
-  const std::vector<Far::Index> indices(mesh.face_indices.begin(), mesh.face_indices.end());
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.vertex_count();
-  desc.numFaces = mesh.face_count();
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  // Crease tags, and the boundary interpolation of the mesh's tags.
-  std::vector<Far::Index> crease_ends;
-  std::vector<float> crease_weights;
-  for (const CreaseTag& c : mesh.tags.creases) {
-    crease_ends.insert(crease_ends.end(), {c.v0, c.v1});
-    crease_weights.push_back(static_cast<float>(c.sharpness));
-  }
-  desc.numCreases = static_cast<int>(crease_weights.size());
-  desc.creaseVertexIndexPairs = crease_ends.data();
-  desc.creaseWeights = crease_weights.data();
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(mesh.tags.boundary_interpolation == BoundaryInterpolation::edge_only
-                                          ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                          : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  return std::unique_ptr<Far::TopologyRefiner>(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
-      desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(type, options)));
+  return test::make_refiner(mesh, type, 0,
+                            test::boundary_option(mesh.tags.boundary_interpolation == BoundaryInterpolation::edge_only
+                                                      ? BoundaryInterpolation::edge_only
+                                                      : BoundaryInterpolation::edge_and_corner));
 }
 
 // Bfr's surface of every face of a mesh whose faces are its ptex faces.

@@ -27,9 +27,7 @@
 #include <gtest/gtest.h>
 
 #include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefiner.h>
-#include <opensubdiv/far/topologyRefinerFactory.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +42,7 @@
 #include "subdiv/refine/creasing.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/rules/catmull_clark.h"
+#include "support/opensubdiv_refiner.h"
 #include "support/opensubdiv_shapes.h"
 
 namespace subdiv {
@@ -64,47 +63,6 @@ struct OsdVertex {
   }
   Vec3 vec() const { return {x, y, z}; }
 };
-
-std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolygonMesh& mesh, Sdc::SchemeType scheme,
-                                                   BoundaryInterpolation boundary) {
-  std::vector<int> sizes;
-  for (Index f = 0; f < mesh.face_count(); ++f) sizes.push_back(mesh.face_size(f));
-  const std::vector<Far::Index> indices(mesh.face_indices.begin(), mesh.face_indices.end());
-  std::vector<Far::Index> pairs, corners;
-  std::vector<float> crease_weights, corner_weights;
-  for (const CreaseTag& c : mesh.tags.creases) {
-    pairs.insert(pairs.end(), {c.v0, c.v1});
-    crease_weights.push_back(static_cast<float>(c.sharpness));
-  }
-  for (const CornerTag& c : mesh.tags.corners) {
-    corners.push_back(c.vertex);
-    corner_weights.push_back(static_cast<float>(c.sharpness));
-  }
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.vertex_count();
-  desc.numFaces = mesh.face_count();
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  desc.numCreases = static_cast<int>(crease_weights.size());
-  desc.creaseVertexIndexPairs = pairs.data();
-  desc.creaseWeights = crease_weights.data();
-  desc.numCorners = static_cast<int>(corner_weights.size());
-  desc.cornerVertexIndices = corners.data();
-  desc.cornerWeights = corner_weights.data();
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(boundary == BoundaryInterpolation::edge_and_corner
-                                          ? Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
-                                          : Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-  options.SetCreasingMethod(Sdc::Options::CREASE_UNIFORM);
-  std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
-      desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(scheme, options)));
-  if (refiner) {
-    Far::TopologyRefiner::UniformOptions uniform(kLevels);
-    uniform.fullTopologyInLastLevel = true;
-    refiner->RefineUniform(uniform);
-  }
-  return refiner;
-}
 
 double bbox_diagonal(const std::vector<Vec3>& points) {
   Vec3 lo = points.front(), hi = points.front();
@@ -129,12 +87,12 @@ TEST_P(OpenSubdivLimit, ClosedFormsMatchOpenSubdiv) {
   const Scheme& scheme = *find_scheme(catmark ? "catmull-clark" : "loop");
   PolygonMesh mesh = read_mesh(path).mesh;
   ASSERT_EQ(test::unsupported_feature(mesh), "");
-  for (CreaseTag& c : mesh.tags.creases) c.sharpness = static_cast<double>(static_cast<float>(c.sharpness));
-  for (CornerTag& c : mesh.tags.corners) c.sharpness = static_cast<double>(static_cast<float>(c.sharpness));
+  test::round_sharpness_to_float(mesh.tags);
   const BoundaryInterpolation boundary = test::harness_boundary(mesh.tags);
 
   // Theirs: level kLevels and its limit.
-  const auto refiner = make_refiner(mesh, catmark ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP, boundary);
+  const auto refiner =
+      test::make_refiner(mesh, catmark ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP, kLevels, test::boundary_option(boundary));
   ASSERT_TRUE(refiner);
   std::vector<OsdVertex> src(mesh.positions.size());
   for (std::size_t v = 0; v < src.size(); ++v) src[v] = {mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z};

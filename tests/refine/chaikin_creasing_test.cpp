@@ -30,9 +30,9 @@
 
 #ifdef SUBDIV_HAVE_OPENSUBDIV
 #include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
-#include <opensubdiv/far/topologyRefinerFactory.h>
 #include <opensubdiv/sdc/crease.h>
+
+#include "support/opensubdiv_refiner.h"
 #endif
 
 namespace subdiv {
@@ -293,33 +293,10 @@ struct OsdVertex {
   }
 };
 
-// OpenSubdiv's refinement of `mesh` (its tags' creases) after `levels` steps.
+// OpenSubdiv's refinement of `mesh` (its tags) after `levels` steps.
 std::vector<Vec3> opensubdiv_refine(const PolygonMesh& mesh, Sdc::SchemeType type, BoundaryInterpolation boundary,
                                     int levels) {
-  std::vector<int> sizes, indices(mesh.face_indices.begin(), mesh.face_indices.end()), pairs;
-  for (Index f = 0; f < mesh.face_count(); ++f) sizes.push_back(mesh.face_size(f));
-  std::vector<float> weights;
-  for (const CreaseTag& c : mesh.tags.creases) {
-    pairs.insert(pairs.end(), {c.v0, c.v1});
-    weights.push_back(static_cast<float>(c.sharpness));
-  }
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.vertex_count();
-  desc.numFaces = mesh.face_count();
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  desc.numCreases = static_cast<int>(weights.size());
-  desc.creaseVertexIndexPairs = pairs.data();
-  desc.creaseWeights = weights.data();
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(boundary == BoundaryInterpolation::edge_only
-                                          ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                          : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  options.SetCreasingMethod(mesh.tags.crease_method == CreaseMethod::chaikin ? Sdc::Options::CREASE_CHAIKIN
-                                                                            : Sdc::Options::CREASE_UNIFORM);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(type, options)));
-  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+  const auto refiner = test::make_refiner(mesh, type, levels, test::boundary_option(boundary));
   std::vector<OsdVertex> current(mesh.positions.size());
   for (std::size_t i = 0; i < current.size(); ++i) current[i] = {mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z};
   const Far::PrimvarRefinerReal<double> primvar(*refiner);

@@ -169,7 +169,7 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   if (const std::string why = rejection(mesh, *scheme.ours, options); !why.empty())
     GTEST_SKIP() << shape << ": " << why;
 
-  const auto refiner = test::make_refiner(mesh, scheme.theirs, kLevels);
+  const auto refiner = test::make_refiner(mesh, scheme.theirs, kLevels, test::their_boundary(mesh.tags));
   ASSERT_TRUE(refiner) << "OpenSubdiv rejected " << shape;
   ASSERT_EQ(refiner->GetNumLevels(), kLevels + 1);
 

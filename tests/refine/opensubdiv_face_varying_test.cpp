@@ -110,7 +110,8 @@ void expect_agreement(const std::string& name, const PolygonMesh& mesh, const Sc
   ASSERT_LE(channel.components, 4);
   const bool loop = scheme.split == SplitRule::triangle;
   const auto refiner =
-      test::make_refiner(mesh, loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, kLevels, &channel, mode);
+      test::make_refiner(mesh, loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, kLevels, test::their_boundary(mesh.tags),
+                         &channel, mode);
   ASSERT_TRUE(refiner) << "OpenSubdiv rejected " << name;
 
   // Their values, level by level.

@@ -12,14 +12,18 @@ namespace subdiv::test {
 namespace Far = OpenSubdiv::Far;
 namespace Sdc = OpenSubdiv::Sdc;
 
-Sdc::Options::VtxBoundaryInterpolation their_boundary(const Tags& tags) {
-  if (!tags.boundary_interpolation_set) return Sdc::Options::VTX_BOUNDARY_NONE;
-  switch (tags.boundary_interpolation) {
+Sdc::Options::VtxBoundaryInterpolation boundary_option(BoundaryInterpolation boundary) {
+  switch (boundary) {
     case BoundaryInterpolation::none: return Sdc::Options::VTX_BOUNDARY_NONE;
     case BoundaryInterpolation::edge_only: return Sdc::Options::VTX_BOUNDARY_EDGE_ONLY;
     case BoundaryInterpolation::edge_and_corner: return Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER;
   }
   return Sdc::Options::VTX_BOUNDARY_NONE;
+}
+
+Sdc::Options::VtxBoundaryInterpolation their_boundary(const Tags& tags) {
+  return tags.boundary_interpolation_set ? boundary_option(tags.boundary_interpolation)
+                                         : Sdc::Options::VTX_BOUNDARY_NONE;
 }
 
 void round_sharpness_to_float(Tags& tags) {
@@ -55,6 +59,7 @@ bool same_cycle(std::span<const Index> a, Far::ConstIndexArray b) {
 }  // namespace
 
 std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolygonMesh& mesh, Sdc::SchemeType scheme, int levels,
+                                                   Sdc::Options::VtxBoundaryInterpolation boundary,
                                                    const FaceVaryingChannel* channel,
                                                    FaceVaryingInterpolation face_varying) {
   std::vector<int> verts_per_face(static_cast<std::size_t>(mesh.face_count()));
@@ -99,7 +104,7 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolygonMesh& mesh, Sdc:
   }
 
   Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(their_boundary(mesh.tags));
+  options.SetVtxBoundaryInterpolation(boundary);
   options.SetCreasingMethod(mesh.tags.crease_method == CreaseMethod::chaikin ? Sdc::Options::CREASE_CHAIKIN
                                                                             : Sdc::Options::CREASE_UNIFORM);
   options.SetTriangleSubdivision(mesh.tags.triangle_subdivision == TriangleSubdivision::smooth
@@ -108,7 +113,7 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const PolygonMesh& mesh, Sdc:
   options.SetFVarLinearInterpolation(their_face_varying(face_varying));
   std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
       desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(scheme, options)));
-  if (!refiner) return refiner;
+  if (!refiner || levels == 0) return refiner;
   Far::TopologyRefiner::UniformOptions uniform(levels);
   uniform.fullTopologyInLastLevel = true;
   refiner->RefineUniform(uniform);

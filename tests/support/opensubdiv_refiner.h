@@ -22,6 +22,9 @@
 
 namespace subdiv::test {
 
+/// OpenSubdiv's name for a boundary interpolation.
+OpenSubdiv::Sdc::Options::VtxBoundaryInterpolation boundary_option(BoundaryInterpolation boundary);
+
 /// OpenSubdiv's regression harness reads `t interpolateboundary` 0/1/2 as
 /// VTX_BOUNDARY_NONE / EDGE_AND_CORNER / EDGE_ONLY, and uses NONE when the
 /// tag is absent.
@@ -31,15 +34,14 @@ OpenSubdiv::Sdc::Options::VtxBoundaryInterpolation their_boundary(const Tags& ta
 /// libraries refine the same values.
 void round_sharpness_to_float(Tags& tags);
 
-/// OpenSubdiv's refiner for `mesh` (its tags, creasing method and triangle
-/// rule), refined uniformly `levels` times with full topology. Where
-/// `channel` is given it becomes face-varying channel 0, refined under
-/// `face_varying`.
-std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> make_refiner(const PolygonMesh& mesh,
-                                                               OpenSubdiv::Sdc::SchemeType scheme, int levels,
-                                                               const FaceVaryingChannel* channel = nullptr,
-                                                               FaceVaryingInterpolation face_varying =
-                                                                   FaceVaryingInterpolation::all);
+/// OpenSubdiv's refiner for `mesh` (its creases, corners, holes, creasing
+/// method and triangle rule) under `boundary`, refined uniformly `levels`
+/// times with full topology (0: the base level alone). Where `channel` is
+/// given it becomes face-varying channel 0, refined under `face_varying`.
+std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> make_refiner(
+    const PolygonMesh& mesh, OpenSubdiv::Sdc::SchemeType scheme, int levels,
+    OpenSubdiv::Sdc::Options::VtxBoundaryInterpolation boundary, const FaceVaryingChannel* channel = nullptr,
+    FaceVaryingInterpolation face_varying = FaceVaryingInterpolation::all);
 
 /// Our vertices and faces of one level, as OpenSubdiv's indices.
 struct Correspondence {
