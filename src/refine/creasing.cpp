@@ -112,26 +112,28 @@ bool classify_vertex(const MeshTopology& topo, BoundaryInterpolation boundary, I
 // sharpness above 1 can stop being sharp at v (its child there decays to 0).
 double parent_rule_weight_at(const MeshTopology& topo, BoundaryInterpolation boundary, Index v, double tagged,
                              const LevelCreasing& out) {
-  const double vs = effective_vertex_sharpness(topo, boundary, v, tagged, out);
+  return decay_weight(topo, out, v, effective_vertex_sharpness(topo, boundary, v, tagged, out), topo.vertex_edges(v));
+}
+
+}  // namespace
+
+double decay_weight(const MeshTopology& topo, const LevelCreasing& creasing, Index v, double vertex_sharpness,
+                    std::span<const Index> edges) noexcept {
   int transitions = 0;
   double sum = 0.0;
-  if (vs > 0.0 && subdivide_sharpness(vs) <= 0.0) {
+  if (vertex_sharpness > 0.0 && subdivide_sharpness(vertex_sharpness) <= 0.0) {
     ++transitions;
-    sum += vs;
+    sum += vertex_sharpness;
   }
-  const bool per_end = !out.child_edge_sharpness.empty();
-  for (const Index e : topo.vertex_edges(v)) {
-    const double s = edge_sharpness_of(out, e);
-    const bool decays = per_end ? out.child_edge_sharpness[child_slot(topo, e, v)] <= 0.0 : s <= 1.0;
-    if (s > 0.0 && decays) {  // sharp now, smooth one level down
-      ++transitions;
+  for (const Index e : edges) {
+    const double s = edge_sharpness_of(creasing, e);
+    if (s > 0.0 && child_sharpness_of(creasing, e, topo.edge_vertices(e)[0] == v ? 0 : 1) <= 0.0) {
+      ++transitions;  // sharp now, smooth one level down
       sum += s;
     }
   }
   return transitions > 0 ? std::min(1.0, sum / transitions) : 0.0;
 }
-
-}  // namespace
 
 std::vector<double> vertex_sharpness(const PolygonMesh& mesh, const MeshTopology& topo, BoundaryInterpolation boundary,
                                      const LevelCreasing& creasing) {

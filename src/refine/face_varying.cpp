@@ -193,28 +193,6 @@ void reclassify_semi_sharp(const MeshTopology& t, const LevelCreasing& creasing,
   }
 }
 
-// Sdc::Crease::ComputeFractionalWeightAtVertex over a span's interior edges:
-// the mean sharpness of what stops being sharp at the vertex, at most 1.
-double fractional_weight(const MeshTopology& t, const LevelCreasing& creasing, CreaseMethod method, Index v,
-                         double vertex_sharpness, std::span<const Index> interior) {
-  int transitions = 0;
-  double sum = 0.0;
-  if (vertex_sharpness > 0.0 && subdivide_sharpness(vertex_sharpness) <= 0.0) {
-    ++transitions;
-    sum += vertex_sharpness;
-  }
-  for (const Index e : interior) {
-    const double s = edge_sharpness_of(creasing, e);
-    const int end = t.edge_vertices(e)[0] == v ? 0 : 1;
-    const bool decays = method == CreaseMethod::uniform ? s <= 1.0 : child_sharpness_of(creasing, e, end) <= 0.0;
-    if (s > 0.0 && decays) {
-      ++transitions;
-      sum += s;
-    }
-  }
-  return transitions > 0 ? std::min(1.0, sum / transitions) : 0.0;
-}
-
 // Each vertex's distinct values, in ring order of first appearance.
 struct VertexValues {
   std::vector<Index> offsets;  // per vertex, into `values`
@@ -396,9 +374,8 @@ bool FaceVaryingRefiner::applies(const Scheme& scheme, FaceVaryingInterpolation 
          (scheme.split == SplitRule::quad || scheme.split == SplitRule::triangle) && !scheme.steps;
 }
 
-FaceVaryingRefiner::FaceVaryingRefiner(FaceVaryingInterpolation mode, BoundaryInterpolation boundary,
-                                       CreaseMethod method)
-    : mode_(mode), boundary_(boundary), method_(method) {}
+FaceVaryingRefiner::FaceVaryingRefiner(FaceVaryingInterpolation mode, BoundaryInterpolation boundary)
+    : mode_(mode), boundary_(boundary) {}
 
 void FaceVaryingRefiner::refine(const PolygonMesh& parent, const MeshTopology& t, const LevelCreasing& creasing,
                                 const SplitMap& map, const ChildMask& mask_of, PolygonMesh& child) {
@@ -524,7 +501,7 @@ void FaceVaryingRefiner::refine(const PolygonMesh& parent, const MeshTopology& t
         const ValueTag& parent_tag = state.tags[at(value)];
         if (parent_tag.semi_sharp) {
           const Span& s = parent_tag.dep_sharp && values.size() == 2 ? spans[1 - i] : spans[i];
-          const double w = fractional_weight(t, creasing, method_, v, sharpness[at(v)], s.interior);
+          const double w = decay_weight(t, creasing, v, sharpness[at(v)], s.interior);
           vertex_weight = (1.0 - w) * 0.75 + w;
           end_weight = (1.0 - w) * 0.125;
         }

@@ -60,8 +60,7 @@ class FaceVaryingRefiner {
 
   /// \param mode the face-varying interpolation option (not `all`).
   /// \param boundary the boundary interpolation.
-  /// \param method the creasing method.
-  FaceVaryingRefiner(FaceVaryingInterpolation mode, BoundaryInterpolation boundary, CreaseMethod method);
+  FaceVaryingRefiner(FaceVaryingInterpolation mode, BoundaryInterpolation boundary);
 
   /// Replaces `child`'s face-varying channels (the split's linear ones)
   /// with the smooth ones refined from `parent`'s.
@@ -90,7 +89,6 @@ class FaceVaryingRefiner {
   };
   FaceVaryingInterpolation mode_;
   BoundaryInterpolation boundary_;
-  CreaseMethod method_;
   bool started_ = false;
   SplitMap previous_map_;  ///< the split that made the current parent level
   std::vector<ChannelState> channels_;

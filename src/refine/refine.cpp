@@ -443,7 +443,7 @@ std::shared_ptr<detail::FaceVaryingRefiner> face_varying_refiner(const PolygonMe
                                                                  const RefineOptions& options) {
   const FaceVaryingInterpolation mode = face_varying_interpolation_of(mesh, options);
   if (mesh.face_varying_channels.empty() || !detail::FaceVaryingRefiner::applies(scheme, mode)) return nullptr;
-  return std::make_shared<detail::FaceVaryingRefiner>(mode, boundary_of(mesh, options), crease_method_of(mesh, options));
+  return std::make_shared<detail::FaceVaryingRefiner>(mode, boundary_of(mesh, options));
 }
 
 // refine_levels()'s step for the fast path: each level's positions and

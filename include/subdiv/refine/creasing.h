@@ -129,6 +129,22 @@ VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) noexce
 LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topology, BoundaryInterpolation boundary,
                                CreaseMethod method);
 
+/// The weight of the parent's rule where features at vertex v stop being
+/// sharp one level down (Sdc::Crease::ComputeFractionalWeightAtVertex): the
+/// mean sharpness of what decays among the vertex (sharpness
+/// `vertex_sharpness`) and `edges` (edges at v), at most 1; 0 where nothing
+/// decays. The vertex rules blend with it over all of v's edges
+/// (LevelCreasing::parent_rule_weight); face-varying creases over a region's.
+/// \param topology the level's topology.
+/// \param creasing the level's creasing.
+/// \param v the vertex.
+/// \param vertex_sharpness v's sharpness as the rules see it (vertex_sharpness()).
+/// \param edges edges at v.
+/// \return the weight, in [0, 1].
+/// \pre every edge in \p edges has v as an end (unchecked).
+double decay_weight(const MeshTopology& topology, const LevelCreasing& creasing, Index v, double vertex_sharpness,
+                    std::span<const Index> edges) noexcept;
+
 /// Every vertex's sharpness as the rules see it: its corner tag (the
 /// largest), or infinite where it cannot be smooth (an isolated vertex; a
 /// non-manifold vertex other than a crease; a one-face boundary vertex under
