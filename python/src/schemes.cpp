@@ -4,7 +4,9 @@
 
 #include <pybind11/stl.h>
 
+#include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,13 +28,18 @@ std::string known_schemes() {
 // The enum value whose to_string() is `name` (the library's spelling, as on
 // the command line).
 template <typename Enum>
-Enum enum_named(const std::string& key, const std::string& name, std::initializer_list<Enum> values) {
+Enum enum_named(const std::string& key, const std::string& name, std::span<const Enum> values) {
   std::string known;
   for (Enum value : values) {
     if (name == to_string(value)) return value;
     known += (known.empty() ? "" : ", ") + std::string(to_string(value));
   }
   throw InvalidInputError(key + "='" + name + "': expected one of " + known);
+}
+
+template <typename Enum>
+Enum enum_named(const std::string& key, const std::string& name, std::initializer_list<Enum> values) {
+  return enum_named(key, name, std::span<const Enum>(values.begin(), values.size()));
 }
 
 std::vector<double> numbers(const py::handle value) {
@@ -132,9 +139,7 @@ RefineOptions refine_options(const py::dict& options) {
                                           {TriangleSubdivision::catmark, TriangleSubdivision::smooth});
     } else if (key == "face_varying") {
       o.face_varying = enum_named(key, value.cast<std::string>(),
-                                  {FaceVaryingInterpolation::none, FaceVaryingInterpolation::corners_only,
-                                   FaceVaryingInterpolation::corners_plus1, FaceVaryingInterpolation::corners_plus2,
-                                   FaceVaryingInterpolation::boundaries, FaceVaryingInterpolation::all});
+                                  std::span<const FaceVaryingInterpolation>(kFaceVaryingInterpolations));
     } else if (key == "flatness") {
       o.flatness = value.cast<double>();
     } else if (key == "allow_non_manifold") {
