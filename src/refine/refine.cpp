@@ -280,17 +280,24 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
                           const RefineOptions& options, Step&& step,
                           const std::function<void(int, const Level&)>& on_child = nullptr,
                           bool every_level = false, const Finish& finish = nullptr) {
-  PolygonMesh current = mesh;
-  if (options.boundary_rules == BoundaryRules::piecewise_smooth && options.corner_angles == CornerAngles::measured)
+  // The level being refined: the input itself until a level is made (a
+  // copy of it would be the input's size again at the peak), or its copy
+  // where corner angles are measured into its tags.
+  PolygonMesh current;
+  const PolygonMesh* parent = &mesh;
+  if (options.boundary_rules == BoundaryRules::piecewise_smooth && options.corner_angles == CornerAngles::measured) {
+    current = mesh;
     detail::measure_corner_angles(current, coarse_topology);
+    parent = &current;
+  }
   std::optional<MeshTopology> topology = std::move(coarse_topology);
   const int last = options.start_level + options.levels;
   for (int l = options.start_level; l < last;) {
-    if (!topology) topology.emplace(current);
-    if (finish && finish(current, *topology, last - l)) return PolygonMesh{};
-    const bool twice = !every_level && l + 2 <= last && takes_two_steps(scheme, current, *topology);
+    if (!topology) topology.emplace(*parent);
+    if (finish && finish(*parent, *topology, last - l)) return PolygonMesh{};
+    const bool twice = !every_level && l + 2 <= last && takes_two_steps(scheme, *parent, *topology);
     const Scheme& level_scheme = twice ? *scheme.fast_path.two_steps : scheme;
-    Level level = step(current, *topology, l, level_scheme);
+    Level level = step(*parent, *topology, l, level_scheme);
     l += twice ? 2 : 1;
     if (l == last) topology.reset();
     else if (level.child_topology) topology = std::move(level.child_topology);
@@ -301,6 +308,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
     else topology.reset();  // built from the child's faces
     if (on_child) on_child(l, level);
     current = std::move(level.child);
+    parent = &current;
     if (options.on_level) options.on_level(l - options.start_level, current);
     // A derived topology holds a copy of the level's faces, and refinement
     // reads faces only through the topology: drop the mesh's copy, the
@@ -311,7 +319,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
       std::vector<Index>().swap(current.face_indices);
     }
   }
-  return current;
+  return parent == &mesh ? mesh : std::move(current);
 }
 
 // The mask applied to positions: parent vertices from `parent`, new face
