@@ -126,25 +126,31 @@ struct TrianglePlan {
   int levels = 0;
   int n = 0;           // grid intervals per face side: 2^levels
   Index per_face = 0;  // final faces per face: 4^levels
-  std::vector<char> regular = {};
-  std::vector<Index> patches = {};  // the reach's slots per face (triangle_patch.h), those of regular faces set
-  MasksMesh local = {};
+  std::vector<char> regular_vertex = {};  // per vertex (regular_triangle_vertices())
+  std::vector<char> regular = {};         // per face, once known (regular_faces())
+  MasksMesh local = {};                   // the others', once known (take_others())
   RefineOptions by_masks = {};
 
   std::size_t slots() const { return static_cast<std::size_t>(triangle_slots(reach)); }
-  const Index* patch(Index f) const { return patches.data() + slots() * static_cast<std::size_t>(f); }
+  // Face f's control points, and whether it is regular. Gathered where
+  // needed rather than kept: a level's patches are more indices than its
+  // faces.
+  bool patch(Index f, std::span<Index> points) const {
+    return gather_triangle_patch(topology, f, reach, regular_vertex, points);
+  }
   std::int64_t last_faces() const { return numbering.faces(levels); }
   std::int64_t last_vertices() const { return numbering.vertices(levels); }
 };
 
+// The plan, without its faces' regularity; nullopt where the grid path does
+// not apply, or where most faces have a corner where the rules are not the
+// regular ones (the masks are then faster).
 std::optional<TrianglePlan> plan_triangles(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                            const RefineOptions& options, int levels) {
   const std::optional<RegularTriangleGrid> rule = regular_triangle_grid_of(scheme);
   if (!rule || scheme.split != SplitRule::triangle || scheme.steps || !covers_level(level, t, options, levels, 3) ||
       t.face_count() == 0)
     return std::nullopt;
-  const int reach = rule->patch_reach();
-  const auto slots = static_cast<std::size_t>(triangle_slots(reach));
   std::optional<TriangleLevel> start = triangle_level(t);
   if (!start) return std::nullopt;
   // Refused where the last level overflows the index type.
@@ -156,49 +162,63 @@ std::optional<TrianglePlan> plan_triangles(const PolygonMesh& level, const MeshT
   }
   constexpr auto kMax = static_cast<std::int64_t>(std::numeric_limits<Index>::max());
   if (3 * faces > kMax || edges > kMax || vertices > kMax) return std::nullopt;
-
+  std::vector<char> regular_vertex = regular_triangle_vertices(t, sharp_vertices(level, t));
+  Index irregular = 0;
+  for (Index f = 0; f < t.face_count(); ++f)
+    for (const Index v : t.face_vertices(f))
+      if (!regular_vertex[static_cast<std::size_t>(v)]) {
+        ++irregular;
+        break;
+      }
+  if (2 * irregular > t.face_count()) return std::nullopt;
   const Index nf = t.face_count();
-  std::vector<char> regular(static_cast<std::size_t>(nf));
-  std::vector<Index> patches;
-  assign_large(patches, slots * static_cast<std::size_t>(nf));
-  const std::vector<char> sharp = sharp_vertices(level, t);
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::array<Index, kMaxTriangleSlots> patch;
-    const std::span<Index> points(patch.data(), slots);
-    for (Index f = range.begin(); f != range.end(); ++f) {
-      const bool is_regular = gather_triangle_patch(t, f, reach, sharp, points);
-      regular[static_cast<std::size_t>(f)] = is_regular;
-      if (is_regular)
-        std::copy(points.begin(), points.end(), patches.begin() + static_cast<std::ptrdiff_t>(slots * static_cast<std::size_t>(f)));
-    }
-  });
+  return TrianglePlan{.topology = t,
+                      .numbering = TriangleNumbering(std::move(*start), levels),
+                      .rule = *rule,
+                      .reach = rule->patch_reach(),
+                      .levels = levels,
+                      .n = 1 << levels,
+                      .per_face = static_cast<Index>(faces / nf),
+                      .regular_vertex = std::move(regular_vertex),
+                      .regular = {},
+                      .local = MasksMesh{},
+                      .by_masks = masks_options(options, levels)};
+}
+
+// Every face's regularity, by gathering its patch.
+std::vector<char> regular_faces(const TrianglePlan& plan) {
+  std::vector<char> regular(static_cast<std::size_t>(plan.topology.face_count()));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, plan.topology.face_count(), 4096),
+                    [&](const tbb::blocked_range<Index>& range) {
+                      std::array<Index, kMaxTriangleSlots> patch;
+                      for (Index f = range.begin(); f != range.end(); ++f)
+                        regular[static_cast<std::size_t>(f)] = plan.patch(f, {patch.data(), plan.slots()});
+                    });
+  return regular;
+}
+
+// Sets the plan's faces' regularity and the masks' mesh of the others;
+// false where that mesh would hold most faces (the masks are then faster).
+bool take_others(TrianglePlan& plan, const PolygonMesh& level, std::vector<char> regular) {
   // The masks' mesh keeps its artificial boundary beyond what the faces'
   // points read: one ring for Loop's rules. Where edge points read wings
   // two steps out, one ring changes the points of
   // tests/refine/grid_butterfly_test.cpp's meshes; two give the masks'
   // values there, and three keep a ring of margin.
-  std::optional<MasksMesh> local = masks_mesh(level, t, regular, reach == 1 ? 1 : 3);
-  if (!local) return std::nullopt;  // mostly irregular: the masks first
-  return TrianglePlan{.topology = t,
-                      .numbering = TriangleNumbering(std::move(*start), levels),
-                      .rule = *rule,
-                      .reach = reach,
-                      .levels = levels,
-                      .n = 1 << levels,
-                      .per_face = static_cast<Index>(faces / nf),
-                      .regular = std::move(regular),
-                      .patches = std::move(patches),
-                      .local = std::move(*local),
-                      .by_masks = masks_options(options, levels)};
+  std::optional<MasksMesh> local = masks_mesh(level, plan.topology, regular, plan.reach == 1 ? 1 : 3);
+  if (!local) return false;
+  plan.regular = std::move(regular);
+  plan.local = std::move(*local);
+  return true;
 }
 
 // Walks face f's final faces (on_face(sub-face) for each) and records, for
 // each point of its grid, its final vertex number (s.index) and, for a face
 // of the masks' mesh, the point's number in that mesh's refinement, whose
-// faces are `local_faces` (s.local_index).
+// faces are `local_faces` (s.local_index; none: f is taken as regular).
 template <typename OnFace>
 void walk_face(const TrianglePlan& plan, Index f, std::span<const Index> local_faces, Scratch& s, OnFace&& on_face) {
-  const bool grid = plan.regular[static_cast<std::size_t>(f)] != 0;
+  const bool grid = local_faces.empty() || plan.regular[static_cast<std::size_t>(f)] != 0;
   const int stride = plan.n + 1;
   const Index local_first = grid ? 0 : plan.local.face_in_mesh[static_cast<std::size_t>(f)] * plan.per_face;
   plan.numbering.for_each_final_face(f, [&](const SubTriangle& sub) {
@@ -228,9 +248,6 @@ std::optional<PolygonMesh> refine_triangles_as_grids(const PolygonMesh& level, c
                                                      const Scheme& scheme, const RefineOptions& options, int levels) {
   std::optional<TrianglePlan> plan = plan_triangles(level, t, scheme, options, levels);
   if (!plan) return std::nullopt;
-  PolygonMesh local_refined;
-  if (plan->local.mesh.face_count() > 0) local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
-
   PolygonMesh out = sized_result(level, options, last_level_tags(level, t, plan->numbering), plan->last_vertices(),
                                  plan->last_faces(), 3);
   std::vector<FaceVaryingLevels> face_varying;
@@ -251,12 +268,43 @@ std::optional<PolygonMesh> refine_triangles_as_grids(const PolygonMesh& level, c
     if (reach == 1) width == 3 ? refine_triangle_patch<3, 1>(rule, levels, width, s) : refine_triangle_patch<0, 1>(rule, levels, width, s);
     else width == 3 ? refine_triangle_patch<3, 2>(rule, levels, width, s) : refine_triangle_patch<0, 2>(rule, levels, width, s);
   };
+  // Shallow grids make only the points their face owns, each straight from
+  // the control points: with two levels a face owns about 8 of its grid's
+  // 15 points, which level by level take 33 with the margin.
+  const std::optional<TrianglePointRows> rows =
+      levels <= kDirectTriangleLevels ? std::optional<TrianglePointRows>(std::in_place, rule, levels) : std::nullopt;
+  auto owned_points_directly = [&](Index f, Scratch& s) {
+    for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
+      const int* slot = rows->slots.data();
+      const double* weight = rows->weights.data();
+      const int begin = rows->offsets[at], end = rows->offsets[at + 1];
+      if (width == 3) {
+        double x = 0.0, y = 0.0, z = 0.0;
+        for (int e = begin; e < end; ++e) {
+          const double* p = s.grid.data() + 3 * slot[e];
+          x += weight[e] * p[0], y += weight[e] * p[1], z += weight[e] * p[2];
+        }
+        out.positions[static_cast<std::size_t>(s.index[at])] = {x, y, z};
+        return;
+      }
+      double* value = s.refined.data();
+      std::fill_n(value, width, 0.0);
+      for (int e = begin; e < end; ++e)
+        for (int c = 0; c < width; ++c) value[c] += weight[e] * s.grid[static_cast<std::size_t>(slot[e] * width + c)];
+      scatter(value, s.index[at], out);
+    });
+  };
+
+  // Every face's final faces and face-varying values, and the points of the
+  // regular faces, whose patches are gathered here, once: the faces whose
+  // gathering fails are the masks'.
+  std::vector<char> regular(static_cast<std::size_t>(t.face_count()));
   tbb::enumerable_thread_specific<Scratch> scratch;
   tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
     Scratch& s = scratch.local();
     s.size_for(n, width, reach);
     for (Index f = range.begin(); f != range.end(); ++f) {
-      walk_face(*plan, f, local_refined.face_indices, s, [&](const SubTriangle& sub) {
+      walk_face(*plan, f, {}, s, [&](const SubTriangle& sub) {
         const auto at = static_cast<std::size_t>(sub.face) * 3;
         out.face_offsets[static_cast<std::size_t>(sub.face)] = sub.face * 3;
         std::copy(sub.vertex.begin(), sub.vertex.end(), out.face_indices.begin() + static_cast<std::ptrdiff_t>(at));
@@ -265,15 +313,15 @@ std::optional<PolygonMesh> refine_triangles_as_grids(const PolygonMesh& level, c
         const auto corners = level.face_varying_channels[ch].indices.begin() + 3 * static_cast<std::ptrdiff_t>(f);
         split_face_varying(face_varying[ch], f, {corners[0], corners[1], corners[2]}, 0, out.face_varying_channels[ch]);
       }
-      if (!plan->regular[static_cast<std::size_t>(f)]) {
-        for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
-          copy_point(local_refined, s.local_index[at], s.index[at], out);
-        });
-        continue;
-      }
-      const Index* patch = plan->patch(f);
+      std::array<Index, kMaxTriangleSlots> patch;
+      if (!plan->patch(f, {patch.data(), plan->slots()})) continue;
+      regular[static_cast<std::size_t>(f)] = 1;
       for (std::size_t i = 0; i < plan->slots(); ++i)
         if (patch[i] != kInvalidIndex) values.gather(patch[i], s.grid.data() + i * static_cast<std::size_t>(width));
+      if (rows) {
+        owned_points_directly(f, s);
+        continue;
+      }
       refine_grid(s);
       for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
         scatter(s.grid.data() + static_cast<std::size_t>(((y + reach) * side + x + reach) * width), s.index[at], out);
@@ -281,13 +329,30 @@ std::optional<PolygonMesh> refine_triangles_as_grids(const PolygonMesh& level, c
     }
   });
   out.face_offsets.back() = static_cast<Index>(3 * plan->last_faces());
+
+  // The other faces' points, from the masks' refinement of the small mesh
+  // around them.
+  if (std::all_of(regular.begin(), regular.end(), [](char r) { return r != 0; })) return out;
+  if (!take_others(*plan, level, std::move(regular))) return std::nullopt;
+  const PolygonMesh local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
+    Scratch& s = scratch.local();
+    s.size_for(n, width, reach);
+    for (Index f = range.begin(); f != range.end(); ++f) {
+      if (plan->regular[static_cast<std::size_t>(f)]) continue;
+      walk_face(*plan, f, local_refined.face_indices, s, [](const SubTriangle&) {});
+      for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
+        copy_point(local_refined, s.local_index[at], s.index[at], out);
+      });
+    }
+  });
   return out;
 }
 
 std::optional<StencilTable> triangle_stencils_as_grids(const PolygonMesh& level, const MeshTopology& t,
                                                        const Scheme& scheme, const RefineOptions& options, int levels) {
   std::optional<TrianglePlan> plan = plan_triangles(level, t, scheme, options, levels);
-  if (!plan) return std::nullopt;
+  if (!plan || !take_others(*plan, level, regular_faces(*plan))) return std::nullopt;
   // The masks' mesh: its last level's faces (to place its points) and its table.
   PolygonMesh local_refined;
   StencilTable local_table;
@@ -295,13 +360,7 @@ std::optional<StencilTable> triangle_stencils_as_grids(const PolygonMesh& level,
     local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
     local_table = refine_stencil_table(plan->local.mesh, scheme, plan->by_masks);
   }
-  const std::vector<double> weights = triangle_point_weights(plan->rule, levels);
-  const std::size_t slots = plan->slots();
-  auto for_each_regular_entry = [&](int x, int y, auto&& fn) {
-    const double* w = weights.data() + static_cast<std::size_t>(y * (plan->n + 1) + x) * slots;
-    for (std::size_t k = 0; k < slots; ++k)
-      if (w[k] != 0.0) fn(k, w[k]);
-  };
+  const TrianglePointRows weights(plan->rule, levels);
 
   // Each vertex's row size, from its owning face; then the rows in place.
   const auto rows = static_cast<std::size_t>(plan->last_vertices());
@@ -320,10 +379,9 @@ std::optional<StencilTable> triangle_stencils_as_grids(const PolygonMesh& level,
   };
   for_each_face([&](Index f, const Scratch& s) {
     const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
-    for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
-      Index size = 0;
-      if (grid) for_each_regular_entry(x, y, [&](std::size_t, double) { ++size; });
-      else size = static_cast<Index>(local_table.row_vertices(s.local_index[at]).size());
+    for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
+      const Index size = grid ? weights.offsets[at + 1] - weights.offsets[at]
+                              : static_cast<Index>(local_table.row_vertices(s.local_index[at]).size());
       offsets[static_cast<std::size_t>(s.index[at]) + 1] = size;
     });
   });
@@ -336,14 +394,17 @@ std::optional<StencilTable> triangle_stencils_as_grids(const PolygonMesh& level,
   assign_large(row_weights, static_cast<std::size_t>(offsets.back()));
   for_each_face([&](Index f, const Scratch& s) {
     const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
-    const Index* patch = plan->patch(f);
+    std::array<Index, kMaxTriangleSlots> patch;
+    if (grid) plan->patch(f, {patch.data(), plan->slots()});
     std::array<std::pair<Index, double>, kMaxTriangleSlots> entries;
     std::vector<std::pair<Index, double>> mapped;  // a masks' row over the level's vertices
-    for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
+    for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
       std::span<std::pair<Index, double>> row;
       if (grid) {
         std::size_t count = 0;
-        for_each_regular_entry(x, y, [&](std::size_t k, double w) { entries[count++] = {patch[k], w}; });
+        for (int e = weights.offsets[at]; e < weights.offsets[at + 1]; ++e)
+          entries[count++] = {patch[static_cast<std::size_t>(weights.slots[static_cast<std::size_t>(e)])],
+                              weights.weights[static_cast<std::size_t>(e)]};
         row = {entries.data(), count};
       } else {
         const auto vs = local_table.row_vertices(s.local_index[at]);

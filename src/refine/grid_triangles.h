@@ -19,7 +19,11 @@ namespace subdiv::detail {
 // many remaining levels on: with fewer, a face's grid is too small to repay
 // its patch and numbering, and the masks are faster (BENCHMARKS.md,
 // "Triangles as grids").
-constexpr int kMinTriangleGridLevels = 3;
+constexpr int kMinTriangleGridLevels = 2;
+
+// Up to this many levels, a face's points are evaluated one by one from its
+// control points (TrianglePointRows) rather than refined level by level.
+constexpr int kDirectTriangleLevels = 2;
 
 // The grid path for any number of levels (1 .. 8), as refine_as_grids()
 // and stencils_as_grids() describe it.

@@ -4,6 +4,7 @@
 #include "triangle_patch.h"
 
 #include <algorithm>
+#include <array>
 
 namespace subdiv::detail {
 
@@ -12,10 +13,7 @@ namespace {
 constexpr int kDirection[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};  // counter-clockwise
 constexpr int kCorner[3][2] = {{0, 0}, {1, 0}, {0, 1}};
 
-bool regular_vertex(const MeshTopology& t, Index v, const std::vector<char>& sharp) {
-  return t.vertex_kind(v) == VertexKind::interior && t.valence(v) == 6 && t.vertex_face_count(v) == 6 &&
-         t.ring_ordered(v) && sharp[static_cast<std::size_t>(v)] == 0;
-}
+bool regular_vertex(Index v, const std::vector<char>& regular) { return regular[static_cast<std::size_t>(v)] != 0; }
 
 // Places the ring of the regular vertex v at (vi, vj) into the patch, given
 // two of its neighbours already placed: the ring runs one way or the other
@@ -51,9 +49,76 @@ bool place_ring(const MeshTopology& t, Index v, int vi, int vj, int reach, std::
   return true;
 }
 
+// The direction of corner k's next corner, seen from corner k.
+constexpr int kNextDirection[3] = {0, 2, 4};
+
+// kRingSlots[r][k][d]: at reach r, the slot of corner k's neighbour in
+// direction kNextDirection[k] + d.
+constexpr auto kRingSlots = [] {
+  std::array<std::array<std::array<int, 6>, 3>, kMaxTriangleReach + 1> slots{};
+  for (int r = 1; r <= kMaxTriangleReach; ++r)
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 6; ++d) {
+        const int direction = (kNextDirection[k] + d) % 6;
+        const int i = kCorner[k][0] + kDirection[direction][0], j = kCorner[k][1] + kDirection[direction][1];
+        slots[static_cast<std::size_t>(r)][static_cast<std::size_t>(k)][static_cast<std::size_t>(d)] =
+            (i + r) + (2 * r + 2) * (j + r);
+      }
+  return slots;
+}();
+
+// Places the rings of the triangle's corners, read from their ordered
+// corners: around a regular vertex, face j + 1 of vertex_corners() follows
+// face j counter-clockwise, so the next corner of its corner lies one
+// direction further. Reads the corner arrays only, unlike place_ring(),
+// which searches the ring's edges; false where two rings disagree.
+bool place_corner_rings(const MeshTopology& t, Index first, int reach, std::span<Index> patch) {
+  bool disagree = false;
+  for (int k = 0; k < 3; ++k) {
+    const Index c = first + k;
+    const auto ring = t.vertex_corners(t.corner_vertex(c));
+    std::size_t j = 0;
+    while (j < 6 && ring[j] != c) ++j;
+    if (j == 6) return false;
+    const auto& slot = kRingSlots[static_cast<std::size_t>(reach)][static_cast<std::size_t>(k)];
+    for (std::size_t d = 0; d < 6; ++d) {
+      const Index vertex = t.corner_vertex(t.corner_next(ring[j + d < 6 ? j + d : j + d - 6]));
+      Index& at = patch[static_cast<std::size_t>(slot[d])];
+      disagree |= at != kInvalidIndex && at != vertex;
+      at = vertex;
+    }
+  }
+  return !disagree;
+}
+
+// Whether the N points are set and distinct; every pair compared, which
+// vectorizes and costs less than sorting a dozen.
+template <std::size_t N>
+bool set_and_distinct(std::span<const Index> patch, std::span<const int> slots) {
+  std::array<Index, N> points;
+  bool missing = false;
+  for (std::size_t a = 0; a < N; ++a) {
+    points[a] = patch[static_cast<std::size_t>(slots[a])];
+    missing |= points[a] == kInvalidIndex;
+  }
+  int equal = 0;  // pairs, each point with itself included
+  for (std::size_t a = 0; a < N; ++a)
+    for (std::size_t b = 0; b < N; ++b) equal += points[a] == points[b];
+  return !missing && equal == static_cast<int>(N);
+}
+
 }  // namespace
 
-bool gather_triangle_patch(const MeshTopology& t, Index f, int reach, const std::vector<char>& sharp,
+std::vector<char> regular_triangle_vertices(const MeshTopology& t, const std::vector<char>& sharp) {
+  std::vector<char> regular(static_cast<std::size_t>(t.vertex_count()));
+  for (Index v = 0; v < t.vertex_count(); ++v)
+    regular[static_cast<std::size_t>(v)] = t.vertex_kind(v) == VertexKind::interior && t.valence(v) == 6 &&
+                                           t.vertex_face_count(v) == 6 && t.ring_ordered(v) &&
+                                           sharp[static_cast<std::size_t>(v)] == 0;
+  return regular;
+}
+
+bool gather_triangle_patch(const MeshTopology& t, Index f, int reach, const std::vector<char>& regular,
                            std::span<Index> patch) {
   std::fill(patch.begin(), patch.end(), kInvalidIndex);
   if (t.face_size(f) != 3) return false;
@@ -62,32 +127,34 @@ bool gather_triangle_patch(const MeshTopology& t, Index f, int reach, const std:
   const Index first = t.face_first_corner(f);
   for (int k = 0; k < 3; ++k) {
     const Index v = t.corner_vertex(first + k);
-    if (!regular_vertex(t, v, sharp)) return false;
+    if (!regular_vertex(v, regular)) return false;
     slot(kCorner[k][0], kCorner[k][1]) = v;
   }
-  // The corners' rings (each corner knows the other two), then, at reach
-  // 2, the rings of the points they placed, which must be regular too.
-  for (int k = 0; k < 3; ++k)
-    if (!place_ring(t, t.corner_vertex(first + k), kCorner[k][0], kCorner[k][1], reach, patch)) return false;
+  // The corners' rings, then, at reach 2, the rings of the points they
+  // placed, which must be regular too.
+  if (!place_corner_rings(t, first, reach, patch)) return false;
   if (reach == 2)
     for (int j = -1; j <= 2; ++j)
       for (int i = -1; i + j <= 2; ++i) {
         if (!in_hexagon(i, j, 1, 1) || (i >= 0 && j >= 0 && i + j <= 1)) continue;  // the first ring only
         const Index v = slot(i, j);
-        if (v == kInvalidIndex || !regular_vertex(t, v, sharp) || !place_ring(t, v, i, j, reach, patch)) return false;
+        if (v == kInvalidIndex || !regular_vertex(v, regular) || !place_ring(t, v, i, j, reach, patch)) return false;
       }
   // Every slot of the hexagon set, with distinct points.
-  std::array<Index, kMaxTriangleSlots> points{};
-  std::size_t count = 0;
-  for (int j = -reach; j <= 1 + reach; ++j)
-    for (int i = -reach; i <= 1 + reach; ++i)
-      if (in_hexagon(i, j, 1, reach)) {
-        if (slot(i, j) == kInvalidIndex) return false;
-        points[count++] = slot(i, j);
-      }
-  std::sort(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(count));
-  return std::adjacent_find(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(count)) ==
-         points.begin() + static_cast<std::ptrdiff_t>(count);
+  const std::span<const int> slots = hexagon_slots(reach);
+  return reach == 1 ? set_and_distinct<12>(patch, slots) : set_and_distinct<27>(patch, slots);
+}
+
+std::span<const int> hexagon_slots(int reach) {
+  static const auto table = [] {
+    std::array<std::vector<int>, kMaxTriangleReach + 1> slots;
+    for (int r = 1; r <= kMaxTriangleReach; ++r)
+      for (int j = -r; j <= 1 + r; ++j)
+        for (int i = -r; i <= 1 + r; ++i)
+          if (in_hexagon(i, j, 1, r)) slots[static_cast<std::size_t>(r)].push_back((i + r) + (2 * r + 2) * (j + r));
+    return slots;
+  }();
+  return table[static_cast<std::size_t>(reach)];
 }
 
 TriangleOwnership triangle_ownership_of(const MeshTopology& t, Index f, int n) {
@@ -99,6 +166,20 @@ TriangleOwnership triangle_ownership_of(const MeshTopology& t, Index f, int n) {
     o.edge[c] = t.corner_face(t.edge_corners(t.corner_edge(first + c)).front()) == f;
   }
   return o;
+}
+
+TrianglePointRows::TrianglePointRows(const RegularTriangleGrid& rule, int levels) {
+  const std::vector<double> all = triangle_point_weights(rule, levels);
+  const auto k = static_cast<std::size_t>(triangle_slots(rule.patch_reach()));
+  offsets.push_back(0);
+  for (std::size_t point = 0; point < all.size() / k; ++point) {
+    for (std::size_t slot = 0; slot < k; ++slot)
+      if (all[point * k + slot] != 0.0) {
+        slots.push_back(static_cast<int>(slot));
+        weights.push_back(all[point * k + slot]);
+      }
+    offsets.push_back(static_cast<int>(slots.size()));
+  }
 }
 
 std::vector<double> triangle_point_weights(const RegularTriangleGrid& rule, int levels) {

@@ -38,13 +38,22 @@ inline bool in_hexagon(int i, int j, int n, int r = 1) {
   return i >= -r && j >= -r && i + j >= -r && i <= n + r && j <= n + r && i + j <= n + r;
 }
 
+// The slots of the hexagon of n = 1 and reach r, in row order (12 at reach
+// 1, 27 at reach 2).
+std::span<const int> hexagon_slots(int reach);
+
+// Per vertex: whether the regular rules apply at it: an interior vertex
+// with six triangles around in an ordered ring, not sharp (`sharp`:
+// sharp_vertices()).
+std::vector<char> regular_triangle_vertices(const MeshTopology& t, const std::vector<char>& sharp);
+
 // The control points of triangle f's patch of reach r (the hexagon of n =
 // 1) at (i + r) + (2r + 2)(j + r), the other slots kInvalidIndex; false
-// unless the points the rules read are interior vertices with six
-// triangles around, none sharp (the corners at reach 1; at reach 2 the
+// unless the points the rules read are `regular` vertices
+// (regular_triangle_vertices(): the corners at reach 1; at reach 2 the
 // corners and their rings, whose rings place the second step), and the
 // points are distinct.
-bool gather_triangle_patch(const MeshTopology& t, Index f, int reach, const std::vector<char>& sharp,
+bool gather_triangle_patch(const MeshTopology& t, Index f, int reach, const std::vector<char>& regular,
                            std::span<Index> patch);
 
 // Face f's share of the shared points: a corner vertex belongs to the face
@@ -133,5 +142,13 @@ void refine_triangle_patch(const RegularTriangleGrid& rule, int levels, int widt
 // the (2r + 2)^2 array, slots of them) in the point (i, j) of the triangle
 // refined `levels` times.
 std::vector<double> triangle_point_weights(const RegularTriangleGrid& rule, int levels);
+
+// The same without the zero weights: point (i, j)'s weights are
+// weights[offsets[p] .. offsets[p + 1]) on slots[...] alike, p = i + (n + 1) j.
+struct TrianglePointRows {
+  std::vector<int> offsets, slots;
+  std::vector<double> weights;
+  TrianglePointRows(const RegularTriangleGrid& rule, int levels);
+};
 
 }  // namespace subdiv::detail

@@ -173,8 +173,8 @@ TEST(GridTriangles, EqualsTheMasksOnRealMeshes) {
     mesh.tags.boundary_interpolation = BoundaryInterpolation::edge_and_corner;
     if (!test::rejection(mesh, loop_scheme(), with_grids(true, 1)).empty()) continue;  // not triangles, or not refinable
     // These small shapes are mostly extraordinary: the path applies after
-    // two levels of the masks, so five are compared where that is quick.
-    for (int levels = 3; levels <= (mesh.face_count() <= 200 ? 5 : 4); ++levels)
+    // a level or two of the masks, so five are compared where that is quick.
+    for (int levels = 2; levels <= (mesh.face_count() <= 200 ? 5 : 4); ++levels)
       expect_grids_equal_masks(mesh, loop_scheme(), levels, file.filename().string());
     if (mesh.face_count() <= 200)
       by_grids += takes_grids(refine(mesh, loop_scheme(), with_grids(false, 2)), loop_scheme(), 3);
@@ -216,8 +216,9 @@ TEST(GridTriangles, SameResultForAnyThreadCount) {
   }
 }
 
-// refine() takes triangles as grids from 3 remaining levels on; the path
-// itself covers 1 and 2 levels too (its numbering's shortest cases).
+// refine() takes triangles as grids from 2 remaining levels on
+// (kMinTriangleGridLevels); the path itself covers 1 level too (its
+// numbering's shortest case, and the direct evaluation's).
 TEST(GridTriangles, OneAndTwoLevelsEqualTheMasks) {
   for (const PolygonMesh& mesh : {with_face_varying(with_channels(triangulated_torus(6))), tagged_triangulated_torus(),
                                   test::jittered(test::triangle_grid(24, 20), 4)})
@@ -243,8 +244,9 @@ TEST(GridTriangles, OneAndTwoLevelsEqualTheMasks) {
 }
 
 TEST(GridTriangles, DeclinesWhatItDoesNotCover) {
-  EXPECT_TRUE(takes_grids(triangulated_torus(6), loop_scheme(), 3));
-  EXPECT_FALSE(takes_grids(triangulated_torus(6), loop_scheme(), 2));  // too few levels to repay the grids
+  EXPECT_TRUE(takes_grids(triangulated_torus(6), loop_scheme(), detail::kMinTriangleGridLevels));
+  // too few levels to repay the grids
+  EXPECT_FALSE(takes_grids(triangulated_torus(6), loop_scheme(), detail::kMinTriangleGridLevels - 1));
   // Two faces on the same three vertices: the split's numbering merges
   // their children's edges (a non-manifold edge, so refined only when
   // allowed), which the generic construction handles.
