@@ -134,15 +134,22 @@ struct GridPlan {
   Index per_face = 0;               // final faces per face: 4^levels
   std::vector<LevelCounts> counts = {};  // of the levels before the last
   LevelCounts last = {};
-  std::vector<char> regular = {};
-  std::vector<Index> patches = {};  // side^2 control points per face, those of regular faces set
-  MasksMesh local = {};
-  RefineOptions by_masks = {};  // for the masks' mesh
+  std::vector<char> sharp = {};     // per vertex (sharp_vertices())
+  bool manifold = false;            // whether the masks' mesh must not pinch
+  std::vector<char> regular = {};   // per face, once known (regular_faces())
+  MasksMesh local = {};             // the others', once known (take_others())
+  RefineOptions by_masks = {};      // for the masks' mesh
 
   std::size_t patch_size() const { return static_cast<std::size_t>(side * side); }
-  const Index* patch(Index f) const { return patches.data() + patch_size() * static_cast<std::size_t>(f); }
+  // Face f's control points, and whether it is regular: a patch of the
+  // stencil's reach with no sharp point where the rules read. Gathered where
+  // needed rather than kept: a level's patches are more indices than its faces.
+  bool patch(Index f, std::span<Index> points) const { return gather_patch(topology, f, reach, sharp, points); }
 };
 
+// The plan, without its faces' regularity; nullopt where the grid path does
+// not apply, or where most faces have a corner where the rules are not the
+// regular ones (the masks are then faster).
 std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology& t, const Scheme& scheme,
                                    const RefineOptions& options, int levels) {
   const std::optional<RegularGrid> rule = regular_grid_of(scheme);
@@ -160,46 +167,59 @@ std::optional<GridPlan> plan_grids(const PolygonMesh& level, const MeshTopology&
   constexpr auto kMax = static_cast<std::int64_t>(std::numeric_limits<Index>::max());
   if (4 * plan.last.faces > kMax || plan.last.vertices > kMax) return std::nullopt;
   plan.per_face = static_cast<Index>(plan.last.faces / nf);
+  plan.sharp = sharp_vertices(level, t);
+  Index irregular = 0;
+  for (Index f = 0; f < nf; ++f)
+    for (const Index v : t.face_vertices(f))
+      if (t.vertex_kind(v) != VertexKind::interior || t.valence(v) != 4 || plan.sharp[static_cast<std::size_t>(v)]) {
+        ++irregular;
+        break;
+      }
+  if (2 * irregular > nf) return std::nullopt;
+  // Composite schemes refine manifold meshes only: their masks' mesh must
+  // not pinch.
+  plan.manifold = scheme.steps != nullptr;
+  plan.by_masks = masks_options(options, levels);
+  if (plan.manifold) plan.by_masks.allow_non_manifold = false;
+  return plan;
+}
 
-  // Regular: a patch of the stencil's reach with no sharp point where the rules read.
-  const std::vector<char> sharp = sharp_vertices(level, t);
-  plan.regular.resize(static_cast<std::size_t>(nf));
-  assign_large(plan.patches, plan.patch_size() * static_cast<std::size_t>(nf));
-  tbb::parallel_for(tbb::blocked_range<Index>(0, nf, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::array<Index, kMaxPatchPoints> patch;
-    const std::span<Index> points(patch.data(), plan.patch_size());
-    for (Index f = range.begin(); f != range.end(); ++f) {
-      const bool regular = gather_patch(t, f, reach, sharp, points);
-      plan.regular[static_cast<std::size_t>(f)] = regular;
-      if (regular)
-        std::copy(points.begin(), points.end(),
-                  plan.patches.begin() + static_cast<std::ptrdiff_t>(plan.patch_size() * static_cast<std::size_t>(f)));
-    }
-  });
+// Every face's regularity, by gathering its patch.
+std::vector<char> regular_faces(const GridPlan& plan) {
+  std::vector<char> regular(static_cast<std::size_t>(plan.topology.face_count()));
+  tbb::parallel_for(tbb::blocked_range<Index>(0, plan.topology.face_count(), 4096),
+                    [&](const tbb::blocked_range<Index>& range) {
+                      std::array<Index, kMaxPatchPoints> patch;
+                      for (Index f = range.begin(); f != range.end(); ++f)
+                        regular[static_cast<std::size_t>(f)] = plan.patch(f, {patch.data(), plan.patch_size()});
+                    });
+  return regular;
+}
+
+// Sets the plan's faces' regularity and the masks' mesh of the others;
+// false where that mesh would hold most faces (the masks are then faster).
+bool take_others(GridPlan& plan, const PolygonMesh& level, std::vector<char> regular) {
   // The masks' mesh keeps its artificial boundary beyond what the faces'
   // points read. Catmull-Clark's read the faces around their corners (one
   // ring); a composite scheme's, one ring per smoothing step (its reach);
   // Kobbelt's face points read new edge points on lines one face further
   // out, whose rules see those lines' vertices (reach 2, three rings; with
   // two, the open grid of tests/refine/grid_wide_stencil_test.cpp differs).
-  // Composite schemes refine manifold meshes only: their masks' mesh must
-  // not pinch.
-  const bool manifold = scheme.steps != nullptr;
-  std::optional<MasksMesh> local = masks_mesh(level, t, plan.regular, reach == 1 ? 1 : reach + 1, manifold);
-  if (!local) return std::nullopt;  // mostly irregular: the masks first
+  std::optional<MasksMesh> local =
+      masks_mesh(level, plan.topology, regular, plan.reach == 1 ? 1 : plan.reach + 1, plan.manifold);
+  if (!local) return false;
+  plan.regular = std::move(regular);
   plan.local = std::move(*local);
-  plan.by_masks = masks_options(options, levels);
-  if (manifold) plan.by_masks.allow_non_manifold = false;
-  return plan;
+  return true;
 }
 
 // Walks face f's final faces (on_face(sub-face) for each) and records, for
 // each point of its grid, its final vertex number (s.index) and, for a face
 // of the masks' mesh, the point's number in that mesh's refinement, whose
-// faces are `local_faces` (s.local_index).
+// faces are `local_faces` (s.local_index; none: f is taken as regular).
 template <typename OnFace>
 void walk_face(const GridPlan& plan, Index f, std::span<const Index> local_faces, Scratch& s, OnFace&& on_face) {
-  const bool grid = plan.regular[static_cast<std::size_t>(f)] != 0;
+  const bool grid = local_faces.empty() || plan.regular[static_cast<std::size_t>(f)] != 0;
   const int stride = plan.n + 1;
   const Index local_first = grid ? 0 : plan.local.face_in_mesh[static_cast<std::size_t>(f)] * plan.per_face;
   auto emit = [&](const SubFace& sub) {
@@ -232,9 +252,6 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
     return levels >= kMinTriangleGridLevels ? refine_triangles_as_grids(level, t, scheme, options, levels) : std::nullopt;
   std::optional<GridPlan> plan = plan_grids(level, t, scheme, options, levels);
   if (!plan) return std::nullopt;
-  PolygonMesh local_refined;
-  if (plan->local.mesh.face_count() > 0) local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
-
   PolygonMesh out = sized_result(level, options, last_level_tags(level, t, plan->counts), plan->last.vertices,
                                  plan->last.faces, 4);
   std::vector<FaceVaryingLevels> face_varying;
@@ -257,12 +274,16 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
     else if (reach == 2) width == 3 ? refine_patch<3, 2>(rule, levels, width, s) : refine_patch<0, 2>(rule, levels, width, s);
     else width == 3 ? refine_patch<3, 3>(rule, levels, width, s) : refine_patch<0, 3>(rule, levels, width, s);
   };
+  // Every face's final faces and face-varying values, and the points of the
+  // regular faces, whose patches are gathered here, once: the faces whose
+  // gathering fails are the masks'.
+  std::vector<char> regular(static_cast<std::size_t>(t.face_count()));
   tbb::enumerable_thread_specific<Scratch> scratch;
   tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
     Scratch& s = scratch.local();
     s.size_for(n, width, reach);
     for (Index f = range.begin(); f != range.end(); ++f) {
-      walk_face(*plan, f, local_refined.face_indices, s, [&](const SubFace& sub) {
+      walk_face(*plan, f, {}, s, [&](const SubFace& sub) {
         const auto at = static_cast<std::size_t>(sub.face) * 4;
         out.face_offsets[static_cast<std::size_t>(sub.face)] = sub.face * 4;
         std::copy(sub.vertex.begin(), sub.vertex.end(), out.face_indices.begin() + static_cast<std::ptrdiff_t>(at));
@@ -272,13 +293,9 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
         split_face_varying(face_varying[ch], f, {corners[0], corners[1], corners[2], corners[3]}, 0,
                            out.face_varying_channels[ch]);
       }
-      if (!plan->regular[static_cast<std::size_t>(f)]) {
-        for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
-          copy_point(local_refined, s.local_index[at], s.index[at], out);
-        });
-        continue;
-      }
-      const Index* patch = plan->patch(f);
+      std::array<Index, kMaxPatchPoints> patch;
+      if (!plan->patch(f, {patch.data(), plan->patch_size()})) continue;
+      regular[static_cast<std::size_t>(f)] = 1;
       for (std::size_t i = 0; i < plan->patch_size(); ++i)
         values.gather(patch[i], s.grid.data() + i * static_cast<std::size_t>(width));
       refine_grid(s);
@@ -288,6 +305,23 @@ std::optional<PolygonMesh> refine_as_grids(const PolygonMesh& level, const MeshT
     }
   });
   out.face_offsets.back() = static_cast<Index>(4 * plan->last.faces);
+
+  // The other faces' points, from the masks' refinement of the small mesh
+  // around them.
+  if (std::all_of(regular.begin(), regular.end(), [](char r) { return r != 0; })) return out;
+  if (!take_others(*plan, level, std::move(regular))) return std::nullopt;
+  const PolygonMesh local_refined = refine(plan->local.mesh, scheme, plan->by_masks);
+  tbb::parallel_for(tbb::blocked_range<Index>(0, t.face_count(), 64), [&](const tbb::blocked_range<Index>& range) {
+    Scratch& s = scratch.local();
+    s.size_for(n, width, reach);
+    for (Index f = range.begin(); f != range.end(); ++f) {
+      if (plan->regular[static_cast<std::size_t>(f)]) continue;
+      walk_face(*plan, f, local_refined.face_indices, s, [](const SubFace&) {});
+      for_each_owned_point(*plan, f, [&](int, int, std::size_t at) {
+        copy_point(local_refined, s.local_index[at], s.index[at], out);
+      });
+    }
+  });
   return out;
 }
 
@@ -297,7 +331,7 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
     return levels >= kMinTriangleGridLevels ? triangle_stencils_as_grids(level, t, scheme, options, levels)
                                             : std::nullopt;
   std::optional<GridPlan> plan = plan_grids(level, t, scheme, options, levels);
-  if (!plan) return std::nullopt;
+  if (!plan || !take_others(*plan, level, regular_faces(*plan))) return std::nullopt;
   // The masks' mesh: its last level's faces (to place its points) and its table.
   PolygonMesh local_refined;
   StencilTable local_table;
@@ -359,7 +393,8 @@ std::optional<StencilTable> stencils_as_grids(const PolygonMesh& level, const Me
   assign_large(row_weights, static_cast<std::size_t>(offsets.back()));
   for_each_face([&](Index f, const Scratch& s) {
     const bool grid = plan->regular[static_cast<std::size_t>(f)] != 0;
-    const Index* patch = plan->patch(f);
+    std::array<Index, kMaxPatchPoints> patch;
+    if (grid) plan->patch(f, {patch.data(), plan->patch_size()});
     std::array<std::pair<Index, double>, kMaxPatchPoints> entries;
     for_each_owned_point(*plan, f, [&](int x, int y, std::size_t at) {
       std::size_t count = 0;
