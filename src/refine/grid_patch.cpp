@@ -4,7 +4,9 @@
 #include "grid_patch.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdlib>
+#include <type_traits>
 
 namespace subdiv::detail {
 
@@ -38,9 +40,68 @@ bool regular_vertex(const MeshTopology& t, Index v, const std::vector<char>& sha
          sharp[static_cast<std::size_t>(v)] == 0;
 }
 
+// kRingSlots[k][m]: at reach 1, the slots of the points that the m-th quad
+// counter-clockwise around the face's corner k (m = 1, 2, 3; the face is
+// m = 0) adds: its corner after k's, the one opposite, the one before.
+constexpr auto kRingSlots = [] {
+  constexpr int kCornerAt[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  constexpr int kDirection[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};  // counter-clockwise
+  std::array<std::array<std::array<int, 3>, 4>, 4> slots{};
+  auto slot = [](int x, int y) { return (y + 1) * 4 + (x + 1); };
+  for (int k = 0; k < 4; ++k)
+    for (int m = 1; m < 4; ++m) {
+      const int* a = kDirection[(k + m) % 4];  // corner k's next corner lies in direction k
+      const int* b = kDirection[(k + m + 1) % 4];
+      const int x = kCornerAt[k][0], y = kCornerAt[k][1];
+      slots[static_cast<std::size_t>(k)][static_cast<std::size_t>(m)] = {
+          slot(x + a[0], y + a[1]), slot(x + a[0] + b[0], y + a[1] + b[1]), slot(x + b[0], y + b[1])};
+    }
+  return slots;
+}();
+
+// gather_patch() at reach 1, read from the corners' ordered rings of four
+// quads rather than walked quad by quad: the quads around a regular corner
+// follow one another counter-clockwise in vertex_corners().
+bool gather_ring_patch(const MeshTopology& t, Index f, const std::vector<char>& sharp, std::span<Index> patch) {
+  std::fill(patch.begin(), patch.begin() + 16, kInvalidIndex);
+  const Index first = t.face_first_corner(f);
+  constexpr int kCornerSlot[4] = {5, 6, 10, 9};
+  for (int k = 0; k < 4; ++k) {
+    const Index v = t.corner_vertex(first + k);
+    if (!regular_vertex(t, v, sharp) || !t.ring_ordered(v)) return false;
+    patch[static_cast<std::size_t>(kCornerSlot[k])] = v;
+  }
+  bool disagree = false;
+  for (int k = 0; k < 4; ++k) {
+    const Index c = first + k;
+    const auto ring = t.vertex_corners(t.corner_vertex(c));
+    std::size_t j = 0;
+    while (j < 4 && ring[j] != c) ++j;
+    if (j == 4) return false;
+    for (std::size_t m = 1; m < 4; ++m) {
+      const Index around = ring[(j + m) % 4];
+      if (t.face_size(t.corner_face(around)) != 4) return false;
+      const Index next = t.corner_next(around);
+      const std::array<Index, 3> points = {t.corner_vertex(next), t.corner_vertex(t.corner_next(next)),
+                                           t.corner_vertex(t.corner_prev(around))};
+      const auto& slots = kRingSlots[static_cast<std::size_t>(k)][m];
+      for (std::size_t i = 0; i < 3; ++i) {
+        Index& at = patch[static_cast<std::size_t>(slots[i])];
+        disagree |= at != kInvalidIndex && at != points[i];
+        at = points[i];
+      }
+    }
+  }
+  if (disagree) return false;
+  std::array<Index, 16> points;
+  std::copy_n(patch.begin(), 16, points.begin());
+  return set_and_distinct(points);
+}
+
 }  // namespace
 
 bool gather_patch(const MeshTopology& t, Index f, int reach, const std::vector<char>& sharp, std::span<Index> patch) {
+  if (reach == 1 && t.face_size(f) == 4) return gather_ring_patch(t, f, sharp, patch);
   const int side = patch_side(reach);
   std::fill(patch.begin(), patch.end(), kInvalidIndex);
   auto place = [&](const PlacedQuad& q) {
@@ -78,14 +139,16 @@ bool gather_patch(const MeshTopology& t, Index f, int reach, const std::vector<c
       }
     }
   }
-  std::array<Index, kMaxPatchPoints> sorted{};
   const auto points = static_cast<std::size_t>(side * side);
-  std::copy(patch.begin(), patch.begin() + static_cast<std::ptrdiff_t>(points), sorted.begin());
-  std::sort(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(points));
-  if (sorted.front() == kInvalidIndex ||
-      std::adjacent_find(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(points)) !=
-          sorted.begin() + static_cast<std::ptrdiff_t>(points))
-    return false;
+  auto distinct = [&]<std::size_t N>(std::integral_constant<std::size_t, N>) {
+    std::array<Index, N> copy;
+    std::copy_n(patch.begin(), N, copy.begin());
+    return set_and_distinct(copy);
+  };
+  const bool ok = reach == 1   ? distinct(std::integral_constant<std::size_t, 16>{})
+                  : reach == 2 ? distinct(std::integral_constant<std::size_t, 36>{})
+                               : distinct(std::integral_constant<std::size_t, 64>{});
+  if (!ok) return false;
   // Reach 1 (Catmull-Clark's rules): the corners' rings are all the rules
   // read. Wider stencils read their neighbours' lines too: every point.
   if (reach == 1) {

@@ -24,6 +24,20 @@ constexpr int kMaxPatchPoints = (2 * kMaxPatchReach + 2) * (2 * kMaxPatchReach +
 // Control points per side of a patch of reach r: from -r to r + 1.
 constexpr int patch_side(int reach) { return 2 * reach + 2; }
 
+// Whether a patch's N points are all set (not kInvalidIndex) and distinct.
+// Every pair is compared: that vectorizes, and costs less than sorting a
+// few dozen points.
+template <std::size_t N>
+bool set_and_distinct(const std::array<Index, N>& points) {
+  bool missing = false;
+  int equal = 0;  // pairs, each point with itself included
+  for (std::size_t a = 0; a < N; ++a) {
+    missing |= points[a] == kInvalidIndex;
+    for (std::size_t b = 0; b < N; ++b) equal += points[a] == points[b];
+  }
+  return !missing && equal == static_cast<int>(N);
+}
+
 // The (2r + 2)^2 control points of face f's patch of reach r, row-major
 // from (-r, -r) to (r + 1, r + 1) in the face's frame (corners at (0, 0),
 // (1, 0), (1, 1), (0, 1)), walked face by face across the quads around f;

@@ -91,20 +91,12 @@ bool place_corner_rings(const MeshTopology& t, Index first, int reach, std::span
   return !disagree;
 }
 
-// Whether the N points are set and distinct; every pair compared, which
-// vectorizes and costs less than sorting a dozen.
+// The N points of a patch's hexagon slots.
 template <std::size_t N>
-bool set_and_distinct(std::span<const Index> patch, std::span<const int> slots) {
+std::array<Index, N> hexagon_points(std::span<const Index> patch, std::span<const int> slots) {
   std::array<Index, N> points;
-  bool missing = false;
-  for (std::size_t a = 0; a < N; ++a) {
-    points[a] = patch[static_cast<std::size_t>(slots[a])];
-    missing |= points[a] == kInvalidIndex;
-  }
-  int equal = 0;  // pairs, each point with itself included
-  for (std::size_t a = 0; a < N; ++a)
-    for (std::size_t b = 0; b < N; ++b) equal += points[a] == points[b];
-  return !missing && equal == static_cast<int>(N);
+  for (std::size_t a = 0; a < N; ++a) points[a] = patch[static_cast<std::size_t>(slots[a])];
+  return points;
 }
 
 }  // namespace
@@ -142,7 +134,8 @@ bool gather_triangle_patch(const MeshTopology& t, Index f, int reach, const std:
       }
   // Every slot of the hexagon set, with distinct points.
   const std::span<const int> slots = hexagon_slots(reach);
-  return reach == 1 ? set_and_distinct<12>(patch, slots) : set_and_distinct<27>(patch, slots);
+  return reach == 1 ? set_and_distinct(hexagon_points<12>(patch, slots))
+                    : set_and_distinct(hexagon_points<27>(patch, slots));
 }
 
 std::span<const int> hexagon_slots(int reach) {
