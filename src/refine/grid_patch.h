@@ -5,7 +5,9 @@
 // applied to its grid.
 
 #include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -24,18 +26,26 @@ constexpr int kMaxPatchPoints = (2 * kMaxPatchReach + 2) * (2 * kMaxPatchReach +
 // Control points per side of a patch of reach r: from -r to r + 1.
 constexpr int patch_side(int reach) { return 2 * reach + 2; }
 
-// Whether a patch's N points are all set (not kInvalidIndex) and distinct.
-// Every pair is compared: that vectorizes, and costs less than sorting a
-// few dozen points.
+// Whether a patch's N points are all set (not kInvalidIndex) and distinct,
+// by a small open-addressing set: cheaper than sorting or comparing every
+// pair of a few dozen points.
 template <std::size_t N>
 bool set_and_distinct(const std::array<Index, N>& points) {
-  bool missing = false;
-  int equal = 0;  // pairs, each point with itself included
-  for (std::size_t a = 0; a < N; ++a) {
-    missing |= points[a] == kInvalidIndex;
-    for (std::size_t b = 0; b < N; ++b) equal += points[a] == points[b];
+  constexpr std::size_t kSlots = std::bit_ceil(2 * N);
+  constexpr int kShift = 32 - std::countr_zero(kSlots);
+  std::array<Index, kSlots> seen;
+  seen.fill(kInvalidIndex);
+  for (const Index p : points) {
+    if (p == kInvalidIndex) return false;
+    // Fibonacci hashing: the product's high bits.
+    std::size_t h = (static_cast<std::uint32_t>(p) * 2654435769u) >> kShift;
+    while (seen[h] != kInvalidIndex) {
+      if (seen[h] == p) return false;
+      h = (h + 1) & (kSlots - 1);
+    }
+    seen[h] = p;
   }
-  return !missing && equal == static_cast<int>(N);
+  return true;
 }
 
 // The (2r + 2)^2 control points of face f's patch of reach r, row-major

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 namespace subdiv::detail {
 
@@ -67,21 +68,30 @@ constexpr auto kRingSlots = [] {
   return slots;
 }();
 
+// kNewDirections[k]: the directions d (from kNextDirection[k]) of corner
+// k's ring that no corner before it places: the others are the corners
+// themselves and, shared by two corners, the vertex opposite each edge,
+// which both read from the same face across that edge.
+constexpr std::array<std::pair<std::size_t, std::size_t>, 3> kNewDirections = {{{2, 6}, {3, 6}, {3, 5}}};
+
 // Places the rings of the triangle's corners, read from their ordered
 // corners: around a regular vertex, face j + 1 of vertex_corners() follows
 // face j counter-clockwise, so the next corner of its corner lies one
 // direction further. Reads the corner arrays only, unlike place_ring(),
-// which searches the ring's edges; false where two rings disagree.
+// which searches the ring's edges. At reach 1 each point is read once (the
+// rings of ordered regular vertices agree where they overlap); at reach 2,
+// where place_ring() follows, every ring point is placed and checked.
 bool place_corner_rings(const MeshTopology& t, Index first, int reach, std::span<Index> patch) {
   bool disagree = false;
-  for (int k = 0; k < 3; ++k) {
-    const Index c = first + k;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Index c = first + static_cast<Index>(k);
     const auto ring = t.vertex_corners(t.corner_vertex(c));
     std::size_t j = 0;
     while (j < 6 && ring[j] != c) ++j;
     if (j == 6) return false;
-    const auto& slot = kRingSlots[static_cast<std::size_t>(reach)][static_cast<std::size_t>(k)];
-    for (std::size_t d = 0; d < 6; ++d) {
+    const auto& slot = kRingSlots[static_cast<std::size_t>(reach)][k];
+    const auto [begin, end] = reach == 1 ? kNewDirections[k] : std::pair<std::size_t, std::size_t>{0, 6};
+    for (std::size_t d = begin; d < end; ++d) {
       const Index vertex = t.corner_vertex(t.corner_next(ring[j + d < 6 ? j + d : j + d - 6]));
       Index& at = patch[static_cast<std::size_t>(slot[d])];
       disagree |= at != kInvalidIndex && at != vertex;

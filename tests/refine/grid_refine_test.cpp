@@ -9,13 +9,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <numeric>
 #include <string>
 #include <vector>
 
 #include "grid_test_support.h"
+#include "refine/grid_patch.h"
 #include "refine/grid_refine.h"
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
@@ -228,6 +231,39 @@ TEST(GridRefine, DeclinesWhatItDoesNotCover) {
   EXPECT_FALSE(detail::refine_as_grids(plain, topology, loop_scheme(), with_grids(true, 2), 2));
   // Meshes that are mostly extraordinary take the masks first.
   EXPECT_FALSE(takes_grids(test::cube(), catmull_clark_scheme(), 2));
+}
+
+// On a 3 x 3 torus every vertex is regular, but a face's 4 x 4 patch wraps
+// round and holds points twice: no face is a grid, and refine() takes the
+// masks. On a 4 x 4 torus the patches just fit.
+TEST(GridRefine, PatchesHoldingAPointTwiceAreNotGrids) {
+  for (const int n : {3, 4}) {
+    const PolygonMesh mesh = torus(n);
+    const MeshTopology t(mesh);
+    const std::vector<char> sharp(static_cast<std::size_t>(t.vertex_count()));
+    std::array<Index, detail::kMaxPatchPoints> patch;
+    for (Index f = 0; f < t.face_count(); ++f)
+      EXPECT_EQ(detail::gather_patch(t, f, 1, sharp, patch), n == 4) << n << " x " << n << " torus, face " << f;
+    EXPECT_EQ(takes_grids(mesh, catmull_clark_scheme(), 2), n == 4);
+  }
+}
+
+TEST(GridRefine, SetAndDistinctFindsEveryRepeatAndGap) {
+  std::array<Index, 16> points;
+  std::iota(points.begin(), points.end(), 0);
+  for (Index& p : points) p *= 1 << 26;  // equal high bits after hashing would collide: probing must still tell
+  EXPECT_TRUE(detail::set_and_distinct(points));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      if (i == j) continue;
+      std::array<Index, 16> repeated = points;
+      repeated[j] = repeated[i];
+      EXPECT_FALSE(detail::set_and_distinct(repeated)) << i << " repeated at " << j;
+    }
+    std::array<Index, 16> gap = points;
+    gap[i] = kInvalidIndex;
+    EXPECT_FALSE(detail::set_and_distinct(gap)) << "gap at " << i;
+  }
 }
 
 }  // namespace
