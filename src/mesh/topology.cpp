@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "../core/large_buffers.h"
+#include "../core/parallel_buckets.h"
 #include "union_find.h"
 
 namespace subdiv {
@@ -50,21 +51,18 @@ void MeshTopology::build_edges() {
   const Index nv = vertex_count();
   detail::assign_large(corner_edge_, static_cast<std::size_t>(nc), kInvalidIndex);
 
-  std::vector<Index> bucket_offsets(static_cast<std::size_t>(nv) + 1, 0);
-  for (Index c = 0; c < nc; ++c) {
+  const detail::ParallelBuckets by_vertex(nv);
+  auto smaller_end = [this](Index c, auto&& emit) {
     const Index a = corner_vertex_[c], b = corner_vertex_[corner_next(c)];
-    if (a != b) ++bucket_offsets[std::min(a, b) + 1];
-  }
-  counts_to_offsets(bucket_offsets);
+    if (a != b) emit(std::min(a, b));
+  };
+  std::vector<Index> bucket_offsets;
+  by_vertex.count(nc, smaller_end, bucket_offsets);
   struct HalfEdge { Index other; Index corner; };
   std::vector<HalfEdge> buckets(static_cast<std::size_t>(bucket_offsets.back()));
-  {
-    std::vector<Index> fill(bucket_offsets.begin(), bucket_offsets.end() - 1);
-    for (Index c = 0; c < nc; ++c) {
-      const Index a = corner_vertex_[c], b = corner_vertex_[corner_next(c)];
-      if (a != b) buckets[fill[std::min(a, b)]++] = {std::max(a, b), c};
-    }
-  }
+  by_vertex.fill(nc, smaller_end, bucket_offsets, [&](Index slot, Index c) {
+    buckets[static_cast<std::size_t>(slot)] = {std::max(corner_vertex_[c], corner_vertex_[corner_next(c)]), c};
+  });
 
   // Buckets are independent: sort them and count their distinct edges in
   // parallel, number the edges by a prefix sum, then fill in parallel.
@@ -108,28 +106,21 @@ void MeshTopology::build_edges() {
 }
 
 void MeshTopology::build_vertex_incidence() {
-  const Index nv = vertex_count();
-  detail::assign_large(vertex_corner_offsets_, static_cast<std::size_t>(nv) + 1, 0);
-  for (Index c = 0; c < corner_count(); ++c) ++vertex_corner_offsets_[corner_vertex_[c] + 1];
-  counts_to_offsets(vertex_corner_offsets_);
+  const detail::ParallelBuckets by_vertex(vertex_count());
+  auto corner_vertex = [this](Index c, auto&& emit) { emit(corner_vertex_[c]); };
+  by_vertex.count(corner_count(), corner_vertex, vertex_corner_offsets_);
   detail::assign_large(vertex_corners_, corner_vertex_.size());
-  {
-    std::vector<Index> fill(vertex_corner_offsets_.begin(), vertex_corner_offsets_.end() - 1);
-    for (Index c = 0; c < corner_count(); ++c) vertex_corners_[fill[corner_vertex_[c]]++] = c;
-  }
+  by_vertex.fill(corner_count(), corner_vertex, vertex_corner_offsets_,
+                 [this](Index slot, Index c) { vertex_corners_[static_cast<std::size_t>(slot)] = c; });
 
-  detail::assign_large(vertex_edge_offsets_, static_cast<std::size_t>(nv) + 1, 0);
-  for (const auto& ev : edge_vertices_) {
-    ++vertex_edge_offsets_[ev[0] + 1];
-    ++vertex_edge_offsets_[ev[1] + 1];
-  }
-  counts_to_offsets(vertex_edge_offsets_);
+  auto edge_ends = [this](Index e, auto&& emit) {
+    emit(edge_vertices_[e][0]);
+    emit(edge_vertices_[e][1]);
+  };
+  by_vertex.count(edge_count(), edge_ends, vertex_edge_offsets_);
   detail::assign_large(vertex_edges_, 2 * edge_vertices_.size());
-  std::vector<Index> fill(vertex_edge_offsets_.begin(), vertex_edge_offsets_.end() - 1);
-  for (Index e = 0; e < edge_count(); ++e) {
-    vertex_edges_[fill[edge_vertices_[e][0]]++] = e;
-    vertex_edges_[fill[edge_vertices_[e][1]]++] = e;
-  }
+  by_vertex.fill(edge_count(), edge_ends, vertex_edge_offsets_,
+                 [this](Index slot, Index e) { vertex_edges_[static_cast<std::size_t>(slot)] = e; });
 }
 
 // Faces at the same vertex are in one fan when they share an edge at that

@@ -520,8 +520,6 @@ void check_no_sharp_features(const PolygonMesh& mesh, const Scheme& scheme, cons
                             std::to_string(mesh.tags.holes[0]) + " is tagged as a hole");
 }
 
-// Everything check_refinable() promises, returning the coarse mesh's
-// topology so that refinement does not build it a second time.
 /// Two triangles on the same three vertices (a doubled triangle, around an
 /// interior vertex of valence 2) are a valid surface, but the triangle, sqrt3
 /// and quasi 4-8 splits join their children by two edges between the same
@@ -552,8 +550,10 @@ void check_no_doubled_triangles(const PolygonMesh& mesh, const MeshTopology& top
   }
 }
 
-MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
-                              const SourceLines* lines) {
+// Everything check_refinable() promises, returning the coarse mesh's
+// topology so that refinement does not build it a second time.
+MeshTopology check_and_build_topology(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                                      const SourceLines* lines) {
   if (options.levels < 0) throw InvalidInputError("refinement levels must be >= 0, not " + std::to_string(options.levels));
   check_parameters(scheme);
   if (options.start_level < 0)
@@ -620,6 +620,14 @@ MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, con
     check_no_doubled_triangles(mesh, topology, scheme, lines);
   if (scheme.traits.needs_quads) require_faces_of(4, "quad", "one bilinear or catmull-clark level first makes every face a quad");
   return topology;
+}
+
+// The same with options.threads threads, as the refinement that follows.
+MeshTopology checked_topology(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
+                              const SourceLines* lines) {
+  std::optional<MeshTopology> topology;
+  run_with_threads(options.threads, [&] { topology.emplace(check_and_build_topology(mesh, scheme, options, lines)); });
+  return std::move(*topology);
 }
 
 }  // namespace
