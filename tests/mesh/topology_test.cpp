@@ -5,7 +5,10 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <ranges>
 #include <set>
+
+#include <tbb/task_arena.h>
 
 #include "subdiv/core/error.h"
 #include "support/test_meshes.h"
@@ -186,6 +189,39 @@ TEST(MeshTopology, RejectsOutOfRangeIndices) {
 
 // Independent route: edges, incidence and fans computed by brute force with
 // std::map / BFS on random (often non-manifold) meshes must agree.
+// Its counting sorts split the vertices among the threads: every relation
+// must come out the same with one thread, two, or more parts than cores.
+TEST(MeshTopology, SameForAnyThreadCount) {
+  std::mt19937 rng(7);
+  PolygonMesh mesh = test::jittered(test::triangle_grid(40, 30), 3);
+  std::vector<std::vector<Index>> faces;  // in a shuffled order
+  for (Index f = 0; f < mesh.face_count(); ++f) faces.emplace_back(mesh.face(f).begin(), mesh.face(f).end());
+  std::shuffle(faces.begin(), faces.end(), rng);
+  mesh.face_offsets = {0};
+  mesh.face_indices.clear();
+  for (const auto& face : faces) mesh.add_face(face);
+  auto build = [&](int threads) {
+    std::optional<MeshTopology> t;
+    tbb::task_arena(threads).execute([&] { t.emplace(mesh); });
+    return std::move(*t);
+  };
+  const MeshTopology one = build(1);
+  for (const int threads : {2, 8}) {
+    const MeshTopology other = build(threads);
+    ASSERT_EQ(other.edge_count(), one.edge_count());
+    for (Index c = 0; c < one.corner_count(); ++c) ASSERT_EQ(other.corner_edge(c), one.corner_edge(c)) << threads;
+    for (Index e = 0; e < one.edge_count(); ++e) {
+      ASSERT_EQ(other.edge_vertices(e), one.edge_vertices(e)) << threads;
+      ASSERT_TRUE(std::ranges::equal(other.edge_corners(e), one.edge_corners(e))) << threads << " threads, edge " << e;
+    }
+    for (Index v = 0; v < one.vertex_count(); ++v) {
+      ASSERT_TRUE(std::ranges::equal(other.vertex_corners(v), one.vertex_corners(v))) << threads << ", vertex " << v;
+      ASSERT_TRUE(std::ranges::equal(other.vertex_edges(v), one.vertex_edges(v))) << threads << ", vertex " << v;
+      ASSERT_EQ(other.vertex_kind(v), one.vertex_kind(v));
+    }
+  }
+}
+
 TEST(MeshTopology, AgreesWithBruteForceOnRandomMeshes) {
   std::mt19937 rng(12345);
   for (int trial = 0; trial < 200; ++trial) {
