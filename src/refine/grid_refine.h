@@ -37,7 +37,7 @@ namespace subdiv::detail {
 /// piecewise-smooth rules or non-manifold refinement, a face of the other
 /// kind, an isolated vertex, semi-sharp creases with Chaikin's creasing,
 /// malformed face-varying channels, more than 8 levels (or, for triangles,
-/// fewer than 3: kMinTriangleGridLevels), two triangles on the same three
+/// fewer than kMinTriangleGridLevels), two triangles on the same three
 /// vertices; or where the mesh refined by
 /// the masks would hold more than half the faces (the caller then refines
 /// one level by the masks and asks again).
