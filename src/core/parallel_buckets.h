@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -30,10 +31,10 @@ class ParallelBuckets {
   template <typename ForEachKey>
   void count(Index items, ForEachKey&& for_each_key, std::vector<Index>& offsets) const {
     offsets.assign(static_cast<std::size_t>(keys_) + 1, 0);
-    for_each_part([&](Index low, Index high) {
+    for_each_part([&](Index low, Index high, auto every_key) {
       for (Index i = 0; i < items; ++i)
         for_each_key(i, [&](Index key) {
-          if (key >= low && key < high) ++offsets[static_cast<std::size_t>(key) + 1];
+          if (every_key || (key >= low && key < high)) ++offsets[static_cast<std::size_t>(key) + 1];
         });
     });
     std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
@@ -44,21 +45,24 @@ class ParallelBuckets {
   template <typename ForEachKey, typename Place>
   void fill(Index items, ForEachKey&& for_each_key, const std::vector<Index>& offsets, Place&& place) const {
     std::vector<Index> next(offsets.begin(), offsets.end() - 1);
-    for_each_part([&](Index low, Index high) {
+    for_each_part([&](Index low, Index high, auto every_key) {
       for (Index i = 0; i < items; ++i)
         for_each_key(i, [&](Index key) {
-          if (key >= low && key < high) place(next[static_cast<std::size_t>(key)]++, i);
+          if (every_key || (key >= low && key < high)) place(next[static_cast<std::size_t>(key)]++, i);
         });
     });
   }
 
  private:
+  // body(low, high, every_key): the part's keys, and whether they are all
+  // keys (one part: the serial loop, without the range test).
   template <typename Body>
   void for_each_part(Body&& body) const {
+    if (parts_ == 1) return body(Index{0}, keys_, std::true_type{});
     tbb::parallel_for(0, parts_, [&](int p) {
       const auto low = static_cast<Index>(static_cast<std::int64_t>(keys_) * p / parts_);
       const auto high = static_cast<Index>(static_cast<std::int64_t>(keys_) * (p + 1) / parts_);
-      body(low, high);
+      body(low, high, std::false_type{});
     });
   }
 

@@ -14,10 +14,7 @@ PointValues::PointValues(const PolygonMesh& m) : mesh(m) {
   for (const VertexChannel& c : mesh.vertex_channels) width += c.components;
 }
 
-void PointValues::gather(Index v, double* out) const {
-  const Vec3& p = mesh.positions[static_cast<std::size_t>(v)];
-  out[0] = p.x, out[1] = p.y, out[2] = p.z;
-  out += 3;
+void PointValues::gather_channels(Index v, double* out) const {
   for (const VertexChannel& c : mesh.vertex_channels) {
     const auto k = static_cast<std::size_t>(c.components);
     std::copy_n(c.values.data() + static_cast<std::size_t>(v) * k, k, out);
@@ -25,9 +22,7 @@ void PointValues::gather(Index v, double* out) const {
   }
 }
 
-void scatter(const double* values, Index v, PolygonMesh& out) {
-  out.positions[static_cast<std::size_t>(v)] = {values[0], values[1], values[2]};
-  values += 3;
+void scatter_channels(const double* values, Index v, PolygonMesh& out) {
   for (VertexChannel& c : out.vertex_channels) {
     const auto k = static_cast<std::size_t>(c.components);
     std::copy_n(values, k, c.values.data() + static_cast<std::size_t>(v) * k);

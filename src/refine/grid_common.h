@@ -24,11 +24,25 @@ struct PointValues {
   int width = 3;
 
   explicit PointValues(const PolygonMesh& m);
-  void gather(Index v, double* out) const;
+  // Positions alone (the common case) inline; channels out of line.
+  void gather(Index v, double* out) const {
+    const Vec3& p = mesh.positions[static_cast<std::size_t>(v)];
+    out[0] = p.x, out[1] = p.y, out[2] = p.z;
+    if (width > 3) gather_channels(v, out + 3);
+  }
+
+ private:
+  void gather_channels(Index v, double* out) const;
 };
 
+// Writes one point's channel values to vertex v of `out`.
+void scatter_channels(const double* values, Index v, PolygonMesh& out);
+
 // Writes one point's values (position, then channels) to vertex v of `out`.
-void scatter(const double* values, Index v, PolygonMesh& out);
+inline void scatter(const double* values, Index v, PolygonMesh& out) {
+  out.positions[static_cast<std::size_t>(v)] = {values[0], values[1], values[2]};
+  if (!out.vertex_channels.empty()) scatter_channels(values + 3, v, out);
+}
 
 // Copies vertex `from` of `in` (position and channels) to vertex `to` of `out`.
 void copy_point(const PolygonMesh& in, Index from, Index to, PolygonMesh& out);
