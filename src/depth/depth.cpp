@@ -8,11 +8,13 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
 
 #include "depth/dual_face_bound.h"
+#include "depth/nested_linear_surface.h"
 #include "subdiv/analysis/analyze.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/analysis/regular_smoothness.h"
@@ -289,19 +291,38 @@ DepthBound dual_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const
   }
 }
 
+// Steps after which the split's child faces nest in the parent's: one for
+// the quad and triangle splits, two for the sqrt3 and sqrt2 splits (their
+// second child level is the parent's faces split 1-to-9 or 1-to-4).
+int nesting_steps(const Scheme& scheme) {
+  return scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2 ? 2 : 1;
+}
+
 // The largest distance between `level`'s linear surface (flat triangles,
-// bilinear quads) and the scheme's vertices `samples` levels down, at the
-// same parameter: the linear or bilinear scheme's refinement of `level`
-// numbers its vertices as the scheme's own (the same split).
+// bilinear quads) and the scheme's vertices `samples` nesting periods down,
+// at the same parameter: the linear or bilinear scheme's refinement of
+// `level` numbers its vertices as the scheme's own (the same split); the
+// rotating splits place them by their parameters over two steps
+// (depth/nested_linear_surface.h).
 double linear_surface_distance(const PolygonMesh& level, int level_number, const Scheme& scheme,
                                const RefineOptions& rules, int samples) {
-  const Scheme& flat = scheme.split == SplitRule::quad ? bilinear_scheme() : linear_scheme();
+  const int period = nesting_steps(scheme);
   RefineOptions steps = rules;
-  steps.levels = samples;
+  steps.levels = samples * period;
   steps.start_level = level_number;
   steps.on_level = nullptr;
   const PolygonMesh exact = refine(level, scheme, steps);
-  const PolygonMesh linear = refine(level, flat, steps);
+  PolygonMesh linear;
+  if (period == 1) {
+    linear = refine(level, scheme.split == SplitRule::quad ? bilinear_scheme() : linear_scheme(), steps);
+  } else {
+    linear = level;
+    for (int i = 0; i < samples; ++i)
+      linear = detail::nested_linear_refinement(linear, level_number + period * i, scheme.split);
+    if (linear.face_offsets != exact.face_offsets || linear.face_indices != exact.face_indices)
+      throw std::logic_error(std::string(scheme.name) + ": the nested linear surface's faces differ from the "
+                             "scheme's refinement");
+  }
   double worst = 0.0;
   for (std::size_t v = 0; v < exact.positions.size(); ++v)
     worst = std::max(worst, norm(exact.positions[v] - linear.positions[v]));
@@ -309,61 +330,81 @@ double linear_surface_distance(const PolygonMesh& level, int level_number, const
 }
 
 // Interpolating schemes with wide masks (docs/depth.md, "Interpolating
-// schemes"): the level's linear surface against the limit. A step moves
-// the linear surface by at most its largest displacement D_j (new vertex
-// against the parent level's linear surface there; the difference of two
-// nested linear surfaces is linear on each child face, zero at the old
-// vertices), so the distance after k steps is at most the sum of D_j, j >= k.
+// schemes"): the level's linear surface against the limit. A nesting
+// period (one step, or two of the sqrt3 and sqrt2 splits) moves the linear
+// surface by at most its largest displacement D_j (new vertex against the
+// period's first level's linear surface there; the difference of two nested
+// linear surfaces is linear on each finer face, zero at the old vertices),
+// so the distance after k periods is at most the sum of D_j, j >= k.
 // D_j contracts by the slowest of |lambda_1| at the extraordinary
 // configurations present and the regular rules' bound on their second
 // differences' contraction; its amplitude is measured over the first two
-// steps (the first step's new vertices may move further than the control
-// mesh's shape gives).
+// periods (the first period's new vertices may move further than the
+// control mesh's shape gives). The bound counts periods
+// (DepthBound::steps_per_level).
 DepthBound interpolating_depth_bound(const PolygonMesh& mesh, const Scheme& scheme, const DepthOptions& options,
                                      const SourceLines* lines) {
   const std::string name(scheme.name);
   const int level0 = options.refine.start_level;
+  const int period = nesting_steps(scheme);
   const StartLevel start{mesh, mesh.vertex_count(), 0, lines};
-  const WorstRate extraordinary = worst_rate(start, scheme, options, true);
+  const WorstRate extraordinary = worst_rate(start, scheme, options, true);  // rates per step
   bool has_boundary = false;
   {
     const MeshTopology t(mesh);
     for (Index v = 0; v < t.vertex_count() && !has_boundary; ++v) has_boundary = t.vertex_kind(v) != VertexKind::interior;
   }
+  // The interior rule's bound is per step, the boundary rule's per period of
+  // the scheme (regular_boundary_rule()): both are taken per step here.
   RegularSmoothness regular = regular_smoothness_of(scheme, options.refine, false);
+  double regular_rate = regular.upper;
   std::string regular_where = "the regular interior rules";
   if (has_boundary) {
-    const RegularSmoothness edge = regular_smoothness(regular_boundary_rule(scheme, options.refine));
-    if (!(edge.upper > 0.0)) regular = edge;
-    else if (edge.upper > regular.upper) {
+    RegularSmoothness edge;
+    try {
+      edge = regular_smoothness(regular_boundary_rule(scheme, options.refine));
+    } catch (const InvalidInputError& e) {
+      throw InvalidInputError(name + ": no depth bound on a mesh with a boundary: the contraction of the regular "
+                              "boundary rules' second differences is not known (" + e.what() + ")");
+    }
+    const double edge_rate = std::pow(edge.upper, 1.0 / scheme.traits.period);
+    if (!(edge.upper > 0.0)) {
       regular = edge;
+      regular_rate = edge.upper;
+    } else if (edge_rate > regular_rate) {
+      regular = edge;
+      regular_rate = edge_rate;
       regular_where = "the regular boundary rules";
     }
   }
-  if (!(regular.upper > 0.0 && regular.upper < 1.0))
+  if (!(regular_rate > 0.0 && regular_rate < 1.0))
     throw InvalidInputError(name + ": no depth bound: the regular rules give no contraction of their second "
                             "differences (" + regular.reason + ")");
-  double rate = regular.upper;
+  double rate = regular_rate;
   std::string slowest = regular_where + "' second differences (joint spectral radius <= " +
-                        std::to_string(regular.upper) + ")";
+                        std::to_string(regular_rate) + " a step)";
   if (extraordinary.rate > rate) {
     rate = extraordinary.rate;
     slowest = "|lambda_1| at " + extraordinary.where + " (analysis)";
   }
+  rate = std::pow(rate, period);  // per nesting period
   RefineOptions one = options.refine;
-  one.levels = 1;
+  one.levels = period;
   one.on_level = nullptr;
   const double d0 = linear_surface_distance(mesh, level0, scheme, options.refine, 1);
-  const double d1 = linear_surface_distance(refine(mesh, scheme, one), level0 + 1, scheme, options.refine, 1);
+  const double d1 = linear_surface_distance(refine(mesh, scheme, one), level0 + period, scheme, options.refine, 1);
   const double amplitude = std::max(d0, rate > 0.0 ? d1 / rate : 0.0) / (1.0 - rate);
+  const std::string steps = period == 1 ? "step" : "period of " + std::to_string(period) + " steps";
   DepthBound bound{name,
                    "analysis (interpolating)",
                    0,
-                   {{"largest displacement of a step's new vertices from the level's linear surface (the larger of "
-                     "the first two steps'), summed over the steps to come, contracted by the slowest rate: " +
-                         slowest,
+                   {{"largest displacement of the new vertices of a " + steps +
+                         " from the level's linear surface (the larger of the first two), summed over the " +
+                         (period == 1 ? std::string("steps") : "periods of " + std::to_string(period) + " steps") +
+                         " to come, contracted by the slowest rate: " + slowest,
                      amplitude, rate}}};
   bound.measure = DepthMeasure::surface_to_limit;
+  bound.steps_per_level = period;
   return bound;
 }
 
@@ -399,11 +440,6 @@ std::optional<std::string> depth_bound_unavailable(const Scheme& scheme, const D
   if (!is_primal(scheme.split) && scheme.split != SplitRule::sqrt3 && scheme.split != SplitRule::sqrt2)
     return std::string("no depth bound for the ") + to_string(scheme.split) +
            " yet: the bounds are written for the quad, triangle, sqrt3, sqrt2 and dual splits";
-  if (!is_primal(scheme.split) && interpolates_with_wide_masks(scheme, options))
-    return std::string("no depth bound for an interpolating scheme on the ") + to_string(scheme.split) +
-           ": its vertices are on the limit, and a level's linear surface does not contain the next level's (child "
-           "faces straddle parent faces), so the new vertices' displacements do not add up to its distance from the "
-           "limit";
   return std::nullopt;
 }
 

@@ -656,9 +656,14 @@ run depth-four-eight 0 depth "$meshes/cube.obj" -s four-eight --eps 0.01 --verif
   stdout_has depth-four-eight ": within"
 run depth-butterfly 0 depth "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 --verify &&
   stdout_has depth-butterfly "distance of the level's linear surface to the limit" && stdout_has depth-butterfly ": within"
-run depth-interpolatory-sqrt3 1 depth "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 --eps 0.01 &&
-  stderr_one_line depth-interpolatory-sqrt3 &&
-  stderr_has depth-interpolatory-sqrt3 "no depth bound for an interpolating scheme on the sqrt3 split"
+# The rotating splits' interpolating schemes: levels of two steps (after two the faces nest).
+run depth-interpolatory-sqrt3 0 depth "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 --eps 0.01 --verify &&
+  stdout_has depth-interpolatory-sqrt3 "distance of the level's linear surface to the limit" &&
+  stdout_has depth-interpolatory-sqrt3 "refine -l 8" && stdout_has depth-interpolatory-sqrt3 "verify: after 8 steps" &&
+  stdout_has depth-interpolatory-sqrt3 ": within"
+run depth-interpolatory-sqrt3-open 1 depth "$meshes/l_shape.obj" -s interpolatory-sqrt3 --triangulate --eps 0.01 &&
+  stderr_one_line depth-interpolatory-sqrt3-open &&
+  stderr_has depth-interpolatory-sqrt3-open "no depth bound on a mesh with a boundary"
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/square.obj"
 run depth-doo-sabin-corner 0 depth "$work/square.obj" -s doo-sabin --eps 0.01 --verify &&
   stdout_has depth-doo-sabin-corner "after k >= 3 steps" && stdout_has depth-doo-sabin-corner ": within"

@@ -98,6 +98,21 @@ nlohmann::ordered_json trade_off_json(const DepthBound& bound, double eps) {
   return out;
 }
 
+// The costs of the bound's levels, `steps_per_level` steps each (4-8's
+// level_costs() already counts its two-step levels).
+std::vector<LevelCost> bound_level_costs(const PolygonMesh& mesh, const Scheme& scheme, const DepthBound& bound,
+                                         int levels) {
+  const int steps = bound.steps_per_level;
+  if (steps == 1 || scheme.fast_path.two_steps) return level_costs(mesh, scheme, levels);
+  std::vector<LevelCost> costs;
+  for (const LevelCost& c : level_costs(mesh, scheme, levels * steps))
+    if (c.level % steps == 0) {
+      costs.push_back(c);
+      costs.back().level = c.level / steps;
+    }
+  return costs;
+}
+
 int run_depth(const DepthCommandOptions& opt) {
   const Scheme scheme = chosen_scheme(opt.refinement);
   const std::string name(scheme.name);
@@ -111,7 +126,7 @@ int run_depth(const DepthCommandOptions& opt) {
   const DepthBound bound = depth_bound(file.mesh, scheme, options, &file.lines);
   const int depth = bound.depth_for(opt.eps);
   const int steps = bound.steps_per_level;
-  const std::vector<LevelCost> costs = level_costs(file.mesh, scheme, depth);
+  const std::vector<LevelCost> costs = bound_level_costs(file.mesh, scheme, bound, depth);
   clock.lap("bound");
 
   if (!opt.report.json) {  // the bound before the verification, which can take long
@@ -121,7 +136,8 @@ int run_depth(const DepthCommandOptions& opt) {
     print_bound(bound, opt.eps);
     std::printf("\ndepth for accuracy %g: %d (bound there: %.6g)\n", opt.eps, depth, bound.at(depth));
     if (steps > 1)
-      std::printf("levels count %d %s steps each (its two-step quad split): refine -l %d\n", steps, name.c_str(),
+      std::printf("levels count %d %s steps each (%s): refine -l %d\n", steps, name.c_str(),
+                  scheme.fast_path.two_steps ? "its two-step quad split" : "after two steps the split's faces nest",
                   steps * depth);
     print_costs(costs);
     print_trade_off(bound, opt.eps);
@@ -132,7 +148,7 @@ int run_depth(const DepthCommandOptions& opt) {
   if (opt.verify) {
     // The linear surface is measured at the vertices one level further down.
     const bool one_more = bound.measure == DepthMeasure::surface_to_limit;
-    const LevelCost size = one_more ? level_costs(file.mesh, scheme, depth + 1).back() : costs.back();
+    const LevelCost size = one_more ? bound_level_costs(file.mesh, scheme, bound, depth + 1).back() : costs.back();
     if (size.faces > kMaxVerifyFaces || size.corners > std::numeric_limits<std::int32_t>::max() ||
         size.vertices > std::numeric_limits<std::int32_t>::max())
       throw InvalidInputError("--verify: level " + std::to_string(depth + (one_more ? 1 : 0)) + " has " +

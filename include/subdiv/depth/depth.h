@@ -31,13 +31,15 @@ struct DepthOptions {
 /// the analysis's rate over its period (two steps for the sqrt3 split, with
 /// a term for the distances one step in); composite schemes of the quad,
 /// triangle and sqrt3 splits likewise. Interpolating schemes with wide
-/// rules on the quad and triangle splits (the Butterflies, Kobbelt's) are
-/// bounded on the level's linear surface against the limit
-/// (DepthMeasure::surface_to_limit): the first steps' largest displacement
-/// of new vertices from it, summed over the steps to come at the slowest
-/// rate (docs/depth.md). A scheme
-/// with a two-step scheme (Scheme::fast_path.two_steps: 4-8) is bounded through it,
-/// in levels of two steps (DepthBound::steps_per_level).
+/// rules (the Butterflies, Kobbelt's, interpolatory-sqrt3 and
+/// interpolating-sqrt2) are bounded on the level's linear surface against
+/// the limit (DepthMeasure::surface_to_limit): the first steps' largest
+/// displacement of new vertices from it, summed over the steps to come at
+/// the slowest rate (docs/depth.md); on the sqrt3 and sqrt2 splits, whose
+/// faces nest after two steps, in levels of two steps
+/// (DepthBound::steps_per_level). A scheme with a two-step scheme
+/// (Scheme::fast_path.two_steps: 4-8) is bounded through it, in levels of
+/// two steps.
 /// \param mesh The control mesh.
 /// \param scheme The scheme.
 /// \param options The refinement rules.
@@ -47,7 +49,9 @@ struct DepthOptions {
 /// \throws InvalidInputError if depth_bound_unavailable() gives a reason,
 ///         some vertex's limit is only approximated after four isolation
 ///         levels (resolved_limit_distances()), an interpolating scheme's
-///         regular rules give no contraction bound,
+///         regular rules give no contraction bound (or, on a mesh with a
+///         boundary, its regular boundary rules cannot be read: the sqrt3
+///         split's), an open sqrt3 mesh starts at an odd level,
 ///         refinement rejects the mesh (as refine() does: TopologyError,
 ///         ValidationError, ParameterError), limit positions fail (as
 ///         limit_positions() does), or a vertex's configuration has no rate
