@@ -79,6 +79,7 @@ py::dict adaptive(const PolygonMesh& mesh, const std::string& scheme_name, doubl
   d["uniform_faces"] = result.uniform_faces;
   d["transition_faces"] = result.transition_faces;
   d["approximated"] = result.approximated;
+  d["steps_per_level"] = result.steps_per_level;
   return d;
 }
 

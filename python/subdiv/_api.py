@@ -230,10 +230,12 @@ class Adaptive:
     uniform level source_levels[i]), ``distances`` (to the limit),
     ``uniform_depth`` and ``uniform_faces`` (uniform refinement to the same
     eps), ``transition_faces``, ``approximated`` (output vertices whose limit
-    is only approximated: eps is not established there)."""
+    is only approximated: eps is not established there), ``steps_per_level``
+    (refinement steps per level: 2 for four-eight, whose two-step quad split
+    is walked; 1 otherwise)."""
 
     __slots__ = ("mesh", "source_levels", "source_indices", "distances", "uniform_depth", "uniform_faces",
-                 "transition_faces", "approximated")
+                 "transition_faces", "approximated", "steps_per_level")
 
     def __init__(self, d):
         for name in self.__slots__:

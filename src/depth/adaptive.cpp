@@ -285,6 +285,7 @@ AdaptiveResult LeafHierarchy::result() const {
 }  // namespace
 
 std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const AdaptiveOptions& options) {
+  if (scheme.fast_path.two_steps) return adaptive_unavailable(*scheme.fast_path.two_steps, options);
   if (const auto reason = limit_unavailable(scheme)) return "no adaptive refinement without limit positions, and " + *reason;
   if (!is_primal(scheme.split))
     return "adaptive refinement walks the face hierarchy of the quad and triangle splits, whose child faces nest in "
@@ -304,6 +305,13 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
   if (!mesh.tags.holes.empty())
     throw InvalidInputError("face " + std::to_string(mesh.tags.holes.front()) +
                             " is tagged as a hole, and adaptive refinement has no rule for holes (it would fill them)");
+  // 4-8: two of its steps are a quad split (Scheme::fast_path.two_steps), the
+  // same surface, whose face hierarchy is walked in levels of two steps.
+  if (scheme.fast_path.two_steps) {
+    AdaptiveResult result = LeafHierarchy(mesh, *scheme.fast_path.two_steps, eps, options).result();
+    result.steps_per_level = 2;
+    return result;
+  }
   return LeafHierarchy(mesh, scheme, eps, options).result();
 }
 

@@ -682,6 +682,10 @@ run adaptive-info 0 info "$work/spot_adaptive.obj" && stdout_has adaptive-info "
   stdout_has adaptive-info "validation      ok"
 run adaptive-bad-out 1 adaptive "$meshes/cube.obj" -s catmull-clark --eps 0.01 -o "$work/out.xyz" &&
   stderr_one_line adaptive-bad-out
+# four-eight: its two-step quad split's hierarchy, levels of two steps.
+run adaptive-four-eight 0 adaptive "$meshes/cube.obj" -s four-eight --eps 0.01 -o "$work/48_adaptive.obj" &&
+  stdout_has adaptive-four-eight " of two steps, largest vertex-to-limit distance" &&
+  stdout_has adaptive-four-eight "uniform refinement to the same accuracy: 6 steps"
 
 # quasi 4-8: binary steps, --full-steps, tags from OBJ lines, the refusals.
 run refine-q48 0 refine "$data/tagged_octagon.obj" -s quasi-4-8 -l 4 --quasi-boundary smoothed -o "$work/q48.obj" --stats &&

@@ -74,6 +74,13 @@ def test_depth_and_adaptive():
     b = subdiv.depth(mesh, "butterfly", 1e-2, verify=True)
     assert b["measure"] == "surface-to-limit"
     assert 0 < b["verified"]["measured"] <= b["bound"]
+    # On the sqrt3 split, in levels of two steps (after two the faces nest).
+    c = subdiv.depth(mesh, "interpolatory-sqrt3", 1e-2, verify=True)
+    assert c["measure"] == "surface-to-limit" and c["steps_per_level"] == 2
+    assert 0 < c["verified"]["measured"] <= c["bound"]
+    # four-eight walks its two-step quad split.
+    e = subdiv.adaptive(subdiv.read(MESHES / "cube.obj"), "four-eight", 1e-2)
+    assert e.steps_per_level == 2 and np.all(e.distances <= 1e-2)
 
 
 def test_curves():

@@ -66,16 +66,19 @@ struct AdaptiveCommandOptions {
 // further than the a-priori bound's depth, at which every vertex is within
 // eps. Nothing tighter than --max-level where the scheme or the mesh has no
 // bound (the measured distances decide then).
+// --max-level counts the levels adaptive refinement walks (4-8's of two
+// steps each).
 int steps_needed_at_most(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options,
                          std::optional<int>& bound_steps) {
-  if (depth_bound_unavailable(scheme, options.depth)) return options.max_level;
+  const int max_steps = options.max_level * (scheme.fast_path.two_steps ? 2 : 1);
+  if (depth_bound_unavailable(scheme, options.depth)) return max_steps;
   try {
     const DepthBound bound = depth_bound(mesh, scheme, options.depth);
     bound_steps = bound.depth_for(eps) * bound.steps_per_level;
   } catch (const InvalidInputError&) {
-    return options.max_level;  // a configuration without a rate: no bound
+    return max_steps;  // a configuration without a rate: no bound
   }
-  return std::min(*bound_steps, options.max_level);
+  return std::min(*bound_steps, max_steps);
 }
 
 int run_adaptive(const AdaptiveCommandOptions& opt) {
@@ -136,19 +139,20 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
                 {"largest_distance", worst},
                 {"approximated", result.approximated},
                 {"bound_steps", bound_steps ? nlohmann::ordered_json(*bound_steps) : nlohmann::ordered_json(nullptr)},
-                {"uniform", {{"steps", result.uniform_depth}, {"faces", result.uniform_faces}}},
+                {"uniform", {{"steps", result.uniform_depth * result.steps_per_level}, {"faces", result.uniform_faces}}},
                 {"uniform_to_adaptive_faces", ratio},
                 {"seconds", clock.json()}});
     return kExitOk;
   }
   if (opt.report.stats) std::printf("%s\n", clock.text().c_str());
-  std::printf("wrote %s: %s, %s (%lld transition faces), levels 0..%d, largest vertex-to-limit distance %.6g "
+  std::printf("wrote %s: %s, %s (%lld transition faces), levels 0..%d%s, largest vertex-to-limit distance %.6g "
               "(accuracy %g)\n",
               opt.output.c_str(), count_of(result.mesh.vertex_count(), "vertex", "vertices").c_str(),
               count_of(result.mesh.face_count(), "face", "faces").c_str(),
-              static_cast<long long>(result.transition_faces), result.leaves_per_level_max, worst, opt.eps);
+              static_cast<long long>(result.transition_faces), result.leaves_per_level_max,
+              result.steps_per_level > 1 ? " of two steps" : "", worst, opt.eps);
   std::printf("uniform refinement to the same accuracy: %s, %s: %.2fx the adaptive faces\n",
-              count_of(result.uniform_depth, "step", "steps").c_str(),
+              count_of(result.uniform_depth * result.steps_per_level, "step", "steps").c_str(),
               count_of(result.uniform_faces, "face", "faces").c_str(), ratio);
   return kExitOk;
 }

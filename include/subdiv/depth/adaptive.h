@@ -27,10 +27,11 @@ struct AdaptiveOptions {
   DepthOptions depth;  ///< the refinement rules
   /// Deepest level refined; the refinement stops earlier once every leaf's
   /// corners are within eps. Throws InvalidInputError if that takes more.
-  int max_level = 12;
+  int max_level = 12;  ///< in levels of AdaptiveResult::steps_per_level steps
 };
 
-/// Where an output vertex comes from: vertex `index` of uniform level `level`.
+/// Where an output vertex comes from: vertex `index` of uniform level `level`
+/// (of AdaptiveResult::steps_per_level refinement steps each).
 struct AdaptiveVertexSource {
   int level = 0;    ///< the uniform level (0: the control mesh)
   Index index = 0;  ///< the vertex's index in that level
@@ -46,24 +47,29 @@ struct AdaptiveResult {
   /// matched no configuration after four isolation levels): their
   /// `distances` are to that approximation, and eps is not established there.
   Index approximated = 0;
-  /// Uniform steps after which every vertex is within eps (measured), and
-  /// the face count there: what adaptive refinement is compared with.
+  /// Uniform levels (`steps_per_level` steps each) after which every vertex
+  /// is within eps (measured), and the face count there: what adaptive
+  /// refinement is compared with.
   int uniform_depth = 0;
   std::int64_t uniform_faces = 0;  ///< faces of the uniform mesh at `uniform_depth`
   int leaves_per_level_max = 0;  ///< deepest level with a leaf face
   std::int64_t transition_faces = 0;  ///< output faces that are not uniform faces
+  /// Refinement steps per level of the hierarchy walked: 1, or 2 for 4-8,
+  /// whose two-step quad split (Scheme::fast_path.two_steps) is walked.
+  int steps_per_level = 1;
 };
 
 /// Loop (the paper's four face cases, with a leaf met by finer neighbours
 /// split into 2, 3 or 4 triangles) and Catmull-Clark (a leaf met by finer
 /// neighbours is fanned from its face point: quads at corners whose two
 /// edges are split, triangles elsewhere). Any scheme in the registry works
-/// the same way by its split. Throws as refine() does, and for meshes with
+/// the same way by its split; 4-8 by its two-step quad split (the same
+/// surface), in levels of two steps. Throws as refine() does, and for meshes with
 /// hole tags (no rule here keeps a hole open). The result carries positions
 /// and faces only: no channels and no tags.
 /// \param mesh The control mesh.
 /// \param scheme The scheme (quad or triangle split; a composite scheme's
-///        level split).
+///        level split; 4-8).
 /// \param eps The accuracy: the largest vertex-to-limit distance allowed at
 ///        a leaf's corners (mesh units), positive.
 /// \param options The refinement rules and the deepest level.
