@@ -6,12 +6,14 @@
 #include "subdiv/depth/adaptive.h"
 
 #include <algorithm>
+#include <span>
 #include <cstdint>
 #include <optional>
 #include <vector>
 #include <string>
 #include <unordered_map>
 
+#include "depth/adaptive_nesting.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/mesh_measures.h"
@@ -27,7 +29,7 @@ struct Level {
   std::optional<MeshTopology> topology;
   std::vector<double> distance;
   std::vector<char> approximated;  // the vertex's limit is only approximated: distance to that
-  SplitMap map;                 // to the next level
+  detail::Nesting link;         // in the next level
   std::vector<char> exists;     // face is in the hierarchy (its parent was split)
   std::vector<char> split;      // face is replaced by its children
   std::vector<char> edge_split; // edge gets its edge point in the output
@@ -36,7 +38,7 @@ struct Level {
 class LeafHierarchy {
  public:
   LeafHierarchy(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options)
-      : scheme_(scheme), eps_(eps), options_(options) {
+      : scheme_(scheme), eps_(eps), options_(options), steps_(adaptive_steps_per_level(scheme)) {
     add_level(mesh);
     // Uniform levels until every vertex is within eps: no face of the last
     // level is ever split.
@@ -44,14 +46,21 @@ class LeafHierarchy {
       if (static_cast<int>(levels_.size()) > options_.max_level)
         throw InvalidInputError("adaptive refinement: more than " + std::to_string(options_.max_level) +
                                 " levels needed for accuracy " + std::to_string(eps_));
-      RefineOptions one = options_.depth.refine;
-      one.levels = 1;
-      one.start_level = static_cast<int>(levels_.size()) - 1;
-      one.on_level = nullptr;
-      // The split's own map links the levels (hierarchy.h).
-      Hierarchy step = refine_hierarchy(levels_.back().mesh, scheme_, one, KeepLevels::last);
-      levels_.back().map = std::move(*step.levels.back().map);
-      add_level(std::move(step.levels.back().mesh));
+      RefineOptions period = options_.depth.refine;
+      period.levels = steps_;
+      period.start_level = step_number(levels_.size() - 1);
+      period.on_level = nullptr;
+      // The splits' own maps link the levels (hierarchy.h).
+      Hierarchy steps = refine_hierarchy(levels_.back().mesh, scheme_, period, steps_ == 1 ? KeepLevels::last : KeepLevels::all);
+      Level& parent = levels_.back();
+      if (steps_ == 1) {
+        parent.link = detail::one_step_nesting(*parent.topology, *steps.levels.back().map);
+      } else {
+        const MeshTopology middle(steps.levels[1].mesh);
+        parent.link = detail::two_sqrt3_steps_nesting(*parent.topology, *steps.levels[1].map, middle,
+                                                      *steps.levels[2].map, steps.levels[2].mesh);
+      }
+      add_level(std::move(steps.levels.back().mesh));
     }
     levels_.front().exists.assign(levels_.front().exists.size(), 1);
     choose_leaves();
@@ -60,6 +69,10 @@ class LeafHierarchy {
   AdaptiveResult result() const;
 
  private:
+  // The refinement step number of hierarchy level j (the sqrt3 split's
+  // boundary steps alternate with it).
+  int step_number(std::size_t j) const { return options_.depth.refine.start_level + steps_ * static_cast<int>(j); }
+
   void add_level(PolygonMesh mesh) {
     Level level;
     level.mesh = std::move(mesh);
@@ -67,6 +80,7 @@ class LeafHierarchy {
     LimitOptions limit;
     limit.normals = false;
     limit.refine = options_.depth.refine;
+    limit.refine.start_level = step_number(levels_.size());
     limit.refine.on_level = nullptr;
     LimitDistances distances = resolved_limit_distances(level.mesh, scheme_, limit);
     level.distance = std::move(distances.distances);
@@ -102,7 +116,7 @@ class LeafHierarchy {
   // Whether leaf face f of level j must be split instead: two or more mobile
   // corners (the paper's cases c and d), every edge split, or a transition
   // that would use a vertex further than eps from its limit, or an edge
-  // point whose half-edges the next level splits again (a T-junction).
+  // point whose pieces of the edge the next level splits again (a T-junction).
   bool must_split(std::size_t j, Index f) const {
     const Level& level = levels_[j];
     const Level& next = levels_[j + 1];
@@ -118,17 +132,21 @@ class LeafHierarchy {
     const auto far = [&](Index child_vertex) { return mobile(next, child_vertex); };
     for (Index c = t.face_first_corner(f); c < t.face_first_corner(f) + t.face_size(f); ++c) {
       const Index v = t.corner_vertex(c);
-      if (mobile(level, v) && far(level.map.vertex_point(v))) return true;
+      if (mobile(level, v) && far(level.link.vertex_point(v))) return true;
       const Index e = t.corner_edge(c);
       if (!level.edge_split[static_cast<std::size_t>(e)]) continue;
-      const Index mid = level.map.edge_point(e);
-      if (far(mid)) return true;
-      for (const Index end : {v, t.corner_vertex(t.corner_next(c))}) {
-        const Index half = next.topology->find_edge(level.map.vertex_point(end), mid);
-        if (half != kInvalidIndex && next.edge_split[static_cast<std::size_t>(half)]) return true;
+      const std::span<const Index> points = level.link.points_on(e);
+      if (std::any_of(points.begin(), points.end(), far)) return true;
+      const auto [a, b] = t.edge_vertices(e);
+      Index from = level.link.vertex_point(a);
+      for (std::size_t k = 0; k <= points.size(); ++k) {
+        const Index to = k < points.size() ? points[k] : level.link.vertex_point(b);
+        const Index piece = next.topology->find_edge(from, to);
+        if (piece != kInvalidIndex && next.edge_split[static_cast<std::size_t>(piece)]) return true;
+        from = to;
       }
     }
-    return scheme_.split == SplitRule::quad && far(level.map.face_point(f));
+    return !level.link.face_centres.empty() && far(level.link.face_centres[static_cast<std::size_t>(f)]);
   }
 
   // The smallest fixed point: splits are only ever added, so this ends.
@@ -143,8 +161,7 @@ class LeafHierarchy {
           const auto fi = static_cast<std::size_t>(f);
           if (!level.exists[fi] || level.split[fi] || !must_split(j, f)) continue;
           level.split[fi] = 1;
-          const auto [first, last] = child_faces(t, scheme_.split, f);
-          for (Index child = first; child < last; ++child) levels_[j + 1].exists[static_cast<std::size_t>(child)] = 1;
+          for (const Index child : level.link.children_of(f)) levels_[j + 1].exists[static_cast<std::size_t>(child)] = 1;
           changed = true;
         }
       }
@@ -154,6 +171,7 @@ class LeafHierarchy {
   const Scheme& scheme_;
   double eps_;
   AdaptiveOptions options_;
+  int steps_;  // refinement steps per level: 2 for the sqrt3 split, whose faces nest after two
   std::vector<Level> levels_;
 };
 
@@ -168,8 +186,8 @@ AdaptiveResult LeafHierarchy::result() const {
   // names it whatever level a face refers to it at; its position is taken
   // at the deepest level any face refers to it.
   const auto origin = [&](LevelVertex v) {
-    while (v.level > 0 && v.index >= levels_[static_cast<std::size_t>(v.level - 1)].map.vertex_points) {
-      v.index -= levels_[static_cast<std::size_t>(v.level - 1)].map.vertex_points;
+    while (v.level > 0 && v.index >= levels_[static_cast<std::size_t>(v.level - 1)].link.vertex_points) {
+      v.index -= levels_[static_cast<std::size_t>(v.level - 1)].link.vertex_points;
       --v.level;
     }
     return v;
@@ -207,23 +225,25 @@ AdaptiveResult LeafHierarchy::result() const {
       const Index n = t.face_size(f);
       const Index first = t.face_first_corner(f);
       // Corners (a mobile corner at its vertex point one level down) and
-      // the edge points of split edges.
+      // the points of split edges, from corner i towards corner i + 1.
       std::vector<LevelVertex> corner(static_cast<std::size_t>(n));
-      std::vector<std::optional<LevelVertex>> mid(static_cast<std::size_t>(n));
+      std::vector<std::vector<LevelVertex>> along(static_cast<std::size_t>(n));
       int split_edges = 0;
       for (Index i = 0; i < n; ++i) {
         const Index v = t.corner_vertex(first + i);
         corner[static_cast<std::size_t>(i)] =
-            mobile(level, v) ? LevelVertex{lj + 1, level.map.vertex_point(v)} : LevelVertex{lj, v};
+            mobile(level, v) ? LevelVertex{lj + 1, level.link.vertex_point(v)} : LevelVertex{lj, v};
         const Index e = t.corner_edge(first + i);
         if (level.edge_split[static_cast<std::size_t>(e)]) {
-          mid[static_cast<std::size_t>(i)] = LevelVertex{lj + 1, level.map.edge_point(e)};
+          std::vector<LevelVertex>& points = along[static_cast<std::size_t>(i)];
+          for (const Index p : level.link.points_on(e)) points.push_back({lj + 1, p});
+          if (t.edge_vertices(e)[0] != v) std::reverse(points.begin(), points.end());
           ++split_edges;
         }
       }
       const auto v = [&](Index i) { return corner[static_cast<std::size_t>(i % n)]; };
-      const auto m = [&](Index i) { return *mid[static_cast<std::size_t>(i % n)]; };
-      const auto has_mid = [&](Index i) { return mid[static_cast<std::size_t>(i % n)].has_value(); };
+      const auto m = [&](Index i) { return along[static_cast<std::size_t>(i % n)].front(); };
+      const auto has_mid = [&](Index i) { return !along[static_cast<std::size_t>(i % n)].empty(); };
       if (split_edges == 0) {
         emit(corner, false);
         continue;
@@ -245,9 +265,20 @@ AdaptiveResult LeafHierarchy::result() const {
         }
         continue;
       }
+      const LevelVertex centre{lj + 1, level.link.face_centres[fi]};
+      if (scheme_.split == SplitRule::sqrt3) {
+        // Two sqrt3 steps (designed here): fan from the centre over the
+        // corners and the thirds of the split edges.
+        std::vector<LevelVertex> rim;
+        for (Index i = 0; i < n; ++i) {
+          rim.push_back(v(i));
+          rim.insert(rim.end(), along[static_cast<std::size_t>(i)].begin(), along[static_cast<std::size_t>(i)].end());
+        }
+        for (std::size_t k = 0; k < rim.size(); ++k) emit({centre, rim[k], rim[(k + 1) % rim.size()]}, true);
+        continue;
+      }
       // Quad split: fan from the face point; a corner whose two edges are
       // split keeps its child quad.
-      const LevelVertex centre{lj + 1, level.map.face_point(f)};
       for (Index i = 0; i < n; ++i) {
         const bool before = has_mid(i + n - 1);
         const bool after = has_mid(i);
@@ -268,7 +299,7 @@ AdaptiveResult LeafHierarchy::result() const {
   for (std::size_t id = 0; id < origins.size(); ++id) {
     LevelVertex at = origins[id];
     while (at.level < deepest[id]) {
-      at.index = levels_[static_cast<std::size_t>(at.level)].map.vertex_point(at.index);
+      at.index = levels_[static_cast<std::size_t>(at.level)].link.vertex_point(at.index);
       ++at.level;
     }
     const Level& level = levels_[static_cast<std::size_t>(at.level)];
@@ -278,22 +309,34 @@ AdaptiveResult LeafHierarchy::result() const {
     out.approximated += level.approximated[static_cast<std::size_t>(at.index)];
   }
   out.uniform_depth = static_cast<int>(levels_.size()) - 1;
+  out.steps_per_level = steps_;
   out.uniform_faces = levels_.back().mesh.face_count();
   return out;
 }
 
 }  // namespace
 
+int adaptive_steps_per_level(const Scheme& scheme) noexcept {
+  return scheme.fast_path.two_steps || scheme.split == SplitRule::sqrt3 ? 2 : 1;
+}
+
 std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const AdaptiveOptions& options) {
   if (scheme.fast_path.two_steps) return adaptive_unavailable(*scheme.fast_path.two_steps, options);
   if (const auto reason = limit_unavailable(scheme)) return "no adaptive refinement without limit positions, and " + *reason;
-  if (!is_primal(scheme.split))
-    return "adaptive refinement walks the face hierarchy of the quad and triangle splits, whose child faces nest in "
-           "their parents; the other splits' child faces straddle parent faces and need transition rules of their "
-           "own (such as Kobbelt's for sqrt3), not implemented";
-  if (interpolates_with_wide_masks(scheme, options.depth))
+  const bool nests = is_primal(scheme.split) || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
+  if (nests && interpolates_with_wide_masks(scheme, options.depth))
     return "no adaptive refinement for an interpolating scheme: its vertices are on the limit surface at every "
            "level, so their distance to it says nothing about the faces in between";
+  if (scheme.split == SplitRule::sqrt2)
+    return "adaptive refinement of the sqrt2 split walks its two-step quad split, which only 4-8 declares "
+           "(Scheme::fast_path.two_steps)";
+  if (!nests)
+    return std::string("adaptive refinement walks a face hierarchy whose faces nest (the quad and triangle splits' "
+                       "levels, every second level of the sqrt3 split, 4-8's two-step quad split); the child "
+                       "faces of the ") +
+           to_string(scheme.split) +
+           " straddle parent faces at every level, so it has no such hierarchy, and transitions would need rules of "
+           "their own, not implemented";
   return std::nullopt;
 }
 
@@ -309,7 +352,7 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
   // same surface, whose face hierarchy is walked in levels of two steps.
   if (scheme.fast_path.two_steps) {
     AdaptiveResult result = LeafHierarchy(mesh, *scheme.fast_path.two_steps, eps, options).result();
-    result.steps_per_level = 2;
+    result.steps_per_level = adaptive_steps_per_level(scheme);
     return result;
   }
   return LeafHierarchy(mesh, scheme, eps, options).result();

@@ -849,8 +849,14 @@ run depth-midedge-refused 1 depth "$meshes/cube.obj" -s midedge --eps 0.01 &&
   stderr_one_line depth-midedge-refused && stderr_has depth-midedge-refused "no depth bound for the midedge split"
 run depth-sqrt3 0 depth "$meshes/cube.obj" -s sqrt3 --triangulate --eps 0.01 --verify &&
   stdout_has depth-sqrt3 "of a period of 2 steps" && stdout_has depth-sqrt3 ": within"
-run adaptive-sqrt3-refused 1 adaptive "$meshes/cube.obj" -s sqrt3 --triangulate --eps 0.01 -o "$work/x.obj" &&
-  stderr_one_line adaptive-sqrt3-refused && stderr_has adaptive-sqrt3-refused "child faces straddle parent faces"
+# The sqrt3 split's faces nest every two steps: adaptive refinement walks those levels.
+run adaptive-sqrt3 0 adaptive "$meshes/l_shape.obj" -s sqrt3 --triangulate --eps 0.002 -o "$work/a3.obj" &&
+  stdout_has adaptive-sqrt3 " of two steps, largest vertex-to-limit distance" &&
+  stdout_has adaptive-sqrt3 "uniform refinement to the same accuracy: 8 steps"
+run adaptive-sqrt3-info 0 info "$work/a3.obj" && stdout_has adaptive-sqrt3-info "validation      ok" &&
+  stdout_has adaptive-sqrt3-info "boundary loops  1"
+run adaptive-midedge-refused 1 adaptive "$meshes/cube.obj" -s midedge --eps 0.01 -o "$work/x.obj" &&
+  stderr_one_line adaptive-midedge-refused && stderr_has adaptive-midedge-refused "straddle parent faces at every level"
 # Piecewise-smooth rules at an edge-only boundary: the generic masks give
 # every limit (one-face boundary vertices included), so the bound holds.
 run limit-edge-only-piecewise 0 limit "$meshes/l_shape.obj" -o "$work/x.obj" --boundary edge-only \

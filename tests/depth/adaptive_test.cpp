@@ -50,12 +50,16 @@ struct UniformLevel {
   }
 };
 
-UniformLevel next_level(const UniformLevel& level, const Scheme& scheme, int steps) {
+// Level `number` + 1 of the walked hierarchy (`steps` refinement steps
+// each): the sqrt3 split's two steps in one refinement, 4-8's one at a time.
+UniformLevel next_level(const UniformLevel& level, int number, const Scheme& scheme, int steps) {
   RefineOptions one;
-  one.levels = 1;
+  one.levels = scheme.split == SplitRule::sqrt3 ? 2 : 1;
+  one.start_level = steps * number;
   one.regular_grids = false;
   UniformLevel next{refine(level.mesh, scheme, one), {}};
-  if (steps == 1) return next;
+  if (steps == one.levels) return next;
+  one.start_level += 1;
   next.mesh = refine(next.mesh, scheme, one);
   for (Index v = 0; v < next.mesh.vertex_count(); ++v)
     next.by_x.emplace_back(next.mesh.positions[static_cast<std::size_t>(v)].x, v);
@@ -67,13 +71,17 @@ void expect_conforming_and_within(const PolygonMesh& input, const Scheme& scheme
                                   const std::string& name) {
   const AdaptiveResult result = adaptive_refine(input, scheme, eps);
   const MeshTopology t(result.mesh);
-  for (Index e = 0; e < t.edge_count(); ++e) {
-    ASSERT_EQ(t.edge_face_count(e), 2) << name << ": edge " << t.edge_vertices(e)[0] << "-" << t.edge_vertices(e)[1];
-  }
   const MeshTopology input_topology(input);
-  EXPECT_EQ(compute_stats(result.mesh, t).euler_characteristic,
-            compute_stats(input, input_topology).euler_characteristic)
-      << name;
+  const MeshStats in = compute_stats(input, input_topology), out = compute_stats(result.mesh, t);
+  // A crack (a T-junction) is an edge with one face inside the mesh: on a
+  // closed input every edge has two, and on an open one the boundary has as
+  // many loops as the input's.
+  for (Index e = 0; e < t.edge_count(); ++e) {
+    ASSERT_EQ(t.edge_face_count(e), in.boundary_edges == 0 ? 2 : std::min<Index>(t.edge_face_count(e), 2))
+        << name << ": edge " << t.edge_vertices(e)[0] << "-" << t.edge_vertices(e)[1];
+  }
+  EXPECT_EQ(out.boundary_loops, in.boundary_loops) << name;
+  EXPECT_EQ(out.euler_characteristic, in.euler_characteristic) << name;
   EXPECT_TRUE(validate(result.mesh).ok()) << name;
   // Every vertex, independently: the uniform level it names, refined here by
   // the masks as adaptive refinement refines (refine()'s grid path gives the
@@ -85,8 +93,10 @@ void expect_conforming_and_within(const PolygonMesh& input, const Scheme& scheme
   for (std::size_t v = 0; v < result.sources.size(); ++v) {
     const AdaptiveVertexSource source = result.sources[v];
     while (static_cast<int>(levels.size()) <= source.level) {
-      levels.push_back(next_level(levels.back(), scheme, result.steps_per_level));
-      distances.push_back(limit_distances(levels.back().mesh, scheme));
+      levels.push_back(next_level(levels.back(), static_cast<int>(levels.size()) - 1, scheme, result.steps_per_level));
+      LimitOptions at_level;
+      at_level.refine.start_level = result.steps_per_level * (static_cast<int>(levels.size()) - 1);
+      distances.push_back(limit_distances(levels.back().mesh, scheme, at_level));
     }
     const auto level = static_cast<std::size_t>(source.level);
     const std::optional<Index> found = levels[level].find(source.index, result.mesh.positions[v], rounding);
@@ -195,6 +205,40 @@ TEST(Adaptive, FourEightInLevelsOfTwoSteps) {
   EXPECT_EQ(result.steps_per_level, 2);
   EXPECT_GT(result.transition_faces, 0);
   EXPECT_GE(static_cast<double>(result.uniform_faces), 1.5 * result.mesh.face_count());
+}
+
+// The sqrt3 split's faces nest every two steps (1-to-9): its hierarchy is
+// walked in levels of two steps, closed and open meshes alike.
+TEST(Adaptive, Sqrt3InLevelsOfTwoSteps) {
+  std::mt19937 random(16);
+  const Scheme& sqrt3 = *find_scheme("sqrt3");
+  const PolygonMesh cube = triangulate(read_mesh(test::bundled_path("cube.obj")).mesh);
+  expect_conforming_and_within(cube, sqrt3, 0.005, "cube (sqrt3)");
+  expect_conforming_and_within(perturbed(cube, 0.1, random), sqrt3, 0.005, "perturbed cube (sqrt3)");
+  expect_conforming_and_within(spinning_top(7, 4.0, 7.0, 3.0), sqrt3, 0.05, "spinning top (sqrt3)");
+  const PolygonMesh l_shape = triangulate(read_mesh(test::bundled_path("l_shape.obj")).mesh);
+  expect_conforming_and_within(l_shape, sqrt3, 0.002, "l_shape (sqrt3)");
+  const AdaptiveResult result = adaptive_refine(l_shape, sqrt3, 0.002);
+  EXPECT_EQ(result.steps_per_level, 2);
+  EXPECT_GT(result.transition_faces, 0);
+  EXPECT_GE(static_cast<double>(result.uniform_faces), 2.0 * result.mesh.face_count());
+  // Kobbelt's sqrt3 spelt as a composite (closed meshes): the same adaptive mesh.
+  const PolygonMesh bumpy = perturbed(cube, 0.1, random);
+  const AdaptiveResult native = adaptive_refine(bumpy, sqrt3, 0.003);
+  const AdaptiveResult composite = adaptive_refine(bumpy, *find_scheme("composite-sqrt3-kobbelt"), 0.003);
+  ASSERT_GT(native.transition_faces, 0);
+  ASSERT_EQ(composite.mesh.face_indices, native.mesh.face_indices);
+  for (std::size_t v = 0; v < native.mesh.positions.size(); ++v)
+    ASSERT_LE(norm(composite.mesh.positions[v] - native.mesh.positions[v]), 1e-12 * test::radius(bumpy)) << v;
+}
+
+// An open sqrt3 mesh at an odd level: its first step trisects the boundary,
+// and the next level's faces at the boundary straddle two faces.
+TEST(Adaptive, OpenSqrt3MeshesAtOddLevelsAreRefused) {
+  const PolygonMesh l_shape = triangulate(read_mesh(test::bundled_path("l_shape.obj")).mesh);
+  AdaptiveOptions odd;
+  odd.depth.refine.start_level = 1;
+  EXPECT_THROW((void)adaptive_refine(l_shape, *find_scheme("sqrt3"), 0.002, odd), InvalidInputError);
 }
 
 // Interpolating schemes with wide masks: every vertex is on the limit

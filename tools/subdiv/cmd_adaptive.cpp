@@ -66,11 +66,11 @@ struct AdaptiveCommandOptions {
 // further than the a-priori bound's depth, at which every vertex is within
 // eps. Nothing tighter than --max-level where the scheme or the mesh has no
 // bound (the measured distances decide then).
-// --max-level counts the levels adaptive refinement walks (4-8's of two
-// steps each).
+// --max-level counts the levels adaptive refinement walks (4-8's and the
+// sqrt3 split's of two steps each).
 int steps_needed_at_most(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options,
                          std::optional<int>& bound_steps) {
-  const int max_steps = options.max_level * (scheme.fast_path.two_steps ? 2 : 1);
+  const int max_steps = options.max_level * adaptive_steps_per_level(scheme);
   if (depth_bound_unavailable(scheme, options.depth)) return max_steps;
   try {
     const DepthBound bound = depth_bound(mesh, scheme, options.depth);

@@ -54,8 +54,8 @@ struct AdaptiveResult {
   std::int64_t uniform_faces = 0;  ///< faces of the uniform mesh at `uniform_depth`
   int leaves_per_level_max = 0;  ///< deepest level with a leaf face
   std::int64_t transition_faces = 0;  ///< output faces that are not uniform faces
-  /// Refinement steps per level of the hierarchy walked: 1, or 2 for 4-8,
-  /// whose two-step quad split (Scheme::fast_path.two_steps) is walked.
+  /// Refinement steps per level of the hierarchy walked:
+  /// adaptive_steps_per_level() (2 for 4-8 and the sqrt3 split).
   int steps_per_level = 1;
 };
 
@@ -63,13 +63,15 @@ struct AdaptiveResult {
 /// split into 2, 3 or 4 triangles) and Catmull-Clark (a leaf met by finer
 /// neighbours is fanned from its face point: quads at corners whose two
 /// edges are split, triangles elsewhere). Any scheme in the registry works
-/// the same way by its split; 4-8 by its two-step quad split (the same
-/// surface), in levels of two steps. Throws as refine() does, and for meshes with
+/// the same way by its split; the sqrt3 split in levels of two steps (its
+/// faces nest 1-to-9, a leaf met by finer neighbours is fanned from its
+/// centre); 4-8 by its two-step quad split (the same surface), in levels of
+/// two steps. Throws as refine() does, and for meshes with
 /// hole tags (no rule here keeps a hole open). The result carries positions
 /// and faces only: no channels and no tags.
 /// \param mesh The control mesh.
 /// \param scheme The scheme (quad or triangle split; a composite scheme's
-///        level split; 4-8).
+///        level split; the sqrt3 split; 4-8).
 /// \param eps The accuracy: the largest vertex-to-limit distance allowed at
 ///        a leaf's corners (mesh units), positive.
 /// \param options The refinement rules and the deepest level.
@@ -84,6 +86,13 @@ struct AdaptiveResult {
 /// \throws std::bad_alloc if memory runs out.
 AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, double eps,
                                const AdaptiveOptions& options = {});
+
+/// Refinement steps per level of the hierarchy adaptive_refine() walks: 2
+/// for 4-8 (its two-step quad split) and the sqrt3 split (whose faces nest
+/// after two steps), 1 otherwise.
+/// \param scheme The scheme.
+/// \return 1 or 2.
+int adaptive_steps_per_level(const Scheme& scheme) noexcept;
 
 /// Why adaptive_refine() refuses \p scheme whatever the mesh (schemes
 /// without limit positions, splits other than quad and triangle,
