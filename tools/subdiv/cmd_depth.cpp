@@ -28,6 +28,14 @@ namespace subdiv::cli {
 
 namespace {
 
+// --verify's peak memory, in multiples of the measured level's mesh arrays
+// (level_costs() bytes): the hierarchy's last two levels, the limit
+// positions or the linear surface's own refinement, and topologies. Measured
+// (peak RSS over those bytes): 5.7 for Catmull-Clark's vertex-to-limit
+// distances, 3.1 for the Butterfly's linear surface, 5.1 for
+// interpolatory-sqrt3's (two steps, nested).
+constexpr std::int64_t kVerifyPeakFactor = 6;
+
 // The largest level --verify refines: 2^28 faces (about 4 GiB of face
 // arrays for quads); Index is 32-bit, so also at most 2^31 - 1 corners.
 constexpr std::int64_t kMaxVerifyFaces = std::int64_t{1} << 28;
@@ -37,6 +45,7 @@ struct DepthCommandOptions {
   std::string input;
   double eps = 0.0;
   bool verify = false;
+  bool no_memory_check = false;
   RefinementOptionValues refinement;
   ReportOptionValues report;
 };
@@ -156,6 +165,9 @@ int run_depth(const DepthCommandOptions& opt) {
                               " and " + count_of(size.vertices, "vertex", "vertices") + " (" +
                               format_bytes(static_cast<double>(size.bytes)) +
                               "), over the verification budget of 2^28 faces; verify a larger --eps");
+    check_fits_in_memory(kVerifyPeakFactor * size.bytes, opt.no_memory_check,
+                         "--verify at level " + std::to_string(depth + (one_more ? 1 : 0)) + " (" +
+                             format_bytes(static_cast<double>(size.bytes)) + " of mesh arrays)");
     check = check_depth(file.mesh, scheme, bound, depth, options);
     clock.lap("verify");
     if (check->approximated > 0)
@@ -210,6 +222,8 @@ Command add_depth_command(CLI::App& app) {
       ->check(positive_number());
   cmd->add_flag("--verify", opt->verify, "Refine to the depth and measure the distances (exit 2 if one exceeds eps)");
   add_report_options(*cmd, opt->report, "Print the time of each phase");
+  cmd->add_flag("--no-memory-check", opt->no_memory_check,
+                "Verify even when the estimated peak memory exceeds what the machine has available");
   cmd->footer(
       "Loop, Catmull-Clark and Doo-Sabin use the bounds of 'A priori computation of the subdivision\n"
       "depth' (with a term for extraordinary vertices or faces from the analysis); other schemes a\n"
