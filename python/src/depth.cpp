@@ -80,6 +80,9 @@ py::dict adaptive(const PolygonMesh& mesh, const std::string& scheme_name, doubl
   d["transition_faces"] = result.transition_faces;
   d["approximated"] = result.approximated;
   d["steps_per_level"] = result.steps_per_level;
+  d["measure"] = std::string(to_string(result.measure));
+  d["largest_displacement"] = result.largest_displacement;
+  d["displacement_threshold"] = result.displacement_threshold;
   return d;
 }
 

@@ -231,11 +231,16 @@ class Adaptive:
     ``uniform_depth`` and ``uniform_faces`` (uniform refinement to the same
     eps), ``transition_faces``, ``approximated`` (output vertices whose limit
     is only approximated: eps is not established there), ``steps_per_level``
-    (refinement steps per level: 2 for four-eight, whose two-step quad split
-    is walked; 1 otherwise)."""
+    (refinement steps per level: 2 for four-eight and the sqrt3 split; 1
+    otherwise), ``measure`` ("vertex-to-limit", or "surface-to-limit" for
+    interpolating schemes, whose faces are refined until their next level's
+    vertices lie within ``displacement_threshold`` = eps (1 - r) of them,
+    r the depth bound's rate; ``largest_displacement`` is the largest such
+    distance left)."""
 
     __slots__ = ("mesh", "source_levels", "source_indices", "distances", "uniform_depth", "uniform_faces",
-                 "transition_faces", "approximated", "steps_per_level")
+                 "transition_faces", "approximated", "steps_per_level", "measure", "largest_displacement",
+                 "displacement_threshold")
 
     def __init__(self, d):
         for name in self.__slots__:

@@ -19,6 +19,8 @@
 #include "subdiv/depth/mesh_measures.h"
 #include "subdiv/mesh/topology.h"
 #include "subdiv/refine/hierarchy.h"
+#include "subdiv/rules/bilinear.h"
+#include "subdiv/rules/linear.h"
 
 namespace subdiv {
 
@@ -29,6 +31,9 @@ struct Level {
   std::optional<MeshTopology> topology;
   std::vector<double> distance;
   std::vector<char> approximated;  // the vertex's limit is only approximated: distance to that
+  // Interpolating schemes: each vertex's distance from the parent level's
+  // linear surface at its parameter (0 for old vertices and the control mesh).
+  std::vector<double> displacement;
   detail::Nesting link;         // in the next level
   std::vector<char> exists;     // face is in the hierarchy (its parent was split)
   std::vector<char> split;      // face is replaced by its children
@@ -37,12 +42,22 @@ struct Level {
 
 class LeafHierarchy {
  public:
-  LeafHierarchy(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options)
-      : scheme_(scheme), eps_(eps), options_(options), steps_(adaptive_steps_per_level(scheme)) {
-    add_level(mesh);
-    // Uniform levels until every vertex is within eps: no face of the last
-    // level is ever split.
-    while (max_distance(levels_.back()) > eps_) {
+  // `displacement_threshold`: set for interpolating schemes, whose faces are
+  // refined by their next level's displacements instead of their vertices'
+  // distances (every vertex is on the limit).
+  LeafHierarchy(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options,
+                std::optional<double> displacement_threshold = std::nullopt)
+      : scheme_(scheme),
+        eps_(eps),
+        options_(options),
+        steps_(adaptive_steps_per_level(scheme)),
+        threshold_(displacement_threshold) {
+    add_level(mesh, {});
+    // Uniform levels until every vertex is within eps (interpolating schemes:
+    // every new vertex within the threshold of its parent's surface, and one
+    // level more, which the last faces' displacements are read from): no face
+    // of the last level is ever split.
+    while (needs_another_level()) {
       if (static_cast<int>(levels_.size()) > options_.max_level)
         throw InvalidInputError("adaptive refinement: more than " + std::to_string(options_.max_level) +
                                 " levels needed for accuracy " + std::to_string(eps_));
@@ -60,7 +75,9 @@ class LeafHierarchy {
         parent.link = detail::two_sqrt3_steps_nesting(*parent.topology, *steps.levels[1].map, middle,
                                                       *steps.levels[2].map, steps.levels[2].mesh);
       }
-      add_level(std::move(steps.levels.back().mesh));
+      std::vector<double> displacement;
+      if (threshold_) displacement = displacements(parent.mesh, steps.levels.back().mesh);
+      add_level(std::move(steps.levels.back().mesh), std::move(displacement));
     }
     levels_.front().exists.assign(levels_.front().exists.size(), 1);
     choose_leaves();
@@ -73,10 +90,47 @@ class LeafHierarchy {
   // boundary steps alternate with it).
   int step_number(std::size_t j) const { return options_.depth.refine.start_level + steps_ * static_cast<int>(j); }
 
-  void add_level(PolygonMesh mesh) {
+  bool needs_another_level() {
+    if (!threshold_) return max_distance(levels_.back()) > eps_;
+    const std::size_t last = levels_.size() - 1;
+    if (!settled_ && last > 0 &&
+        std::all_of(levels_.back().displacement.begin(), levels_.back().displacement.end(),
+                    [&](double d) { return d <= *threshold_; }))
+      settled_ = last;
+    return !settled_ || last < *settled_ + 1;
+  }
+
+  // Each vertex of `child` (one step of a quad or triangle split below
+  // `parent`) against the parent's linear surface there: the linear or
+  // bilinear scheme's refinement numbers its vertices alike.
+  std::vector<double> displacements(const PolygonMesh& parent, const PolygonMesh& child) const {
+    RefineOptions one = options_.depth.refine;
+    one.levels = 1;
+    one.start_level = step_number(levels_.size() - 1);
+    one.on_level = nullptr;
+    const PolygonMesh flat =
+        refine(parent, scheme_.split == SplitRule::quad ? bilinear_scheme() : linear_scheme(), one);
+    std::vector<double> out(child.positions.size());
+    for (std::size_t v = 0; v < out.size(); ++v) out[v] = norm(child.positions[v] - flat.positions[v]);
+    return out;
+  }
+
+  void add_level(PolygonMesh mesh, std::vector<double> displacement) {
     Level level;
     level.mesh = std::move(mesh);
     level.topology.emplace(level.mesh);
+    if (threshold_) {
+      // Every vertex of an interpolating scheme is on the limit.
+      level.displacement = displacement.empty() ? std::vector<double>(level.mesh.positions.size(), 0.0)
+                                                : std::move(displacement);
+      level.distance.assign(level.mesh.positions.size(), 0.0);
+      level.approximated.assign(level.mesh.positions.size(), 0);
+      level.exists.assign(static_cast<std::size_t>(level.topology->face_count()), 0);
+      level.split.assign(level.exists.size(), 0);
+      level.edge_split.assign(static_cast<std::size_t>(level.topology->edge_count()), 0);
+      levels_.push_back(std::move(level));
+      return;
+    }
     LimitOptions limit;
     limit.normals = false;
     limit.refine = options_.depth.refine;
@@ -98,6 +152,21 @@ class LeafHierarchy {
   }
 
   bool mobile(const Level& level, Index v) const { return level.distance[static_cast<std::size_t>(v)] > eps_; }
+
+  // Interpolating schemes: the largest displacement of the next level's
+  // vertices made inside face f of level j or on its edges.
+  double displacement_inside(std::size_t j, Index f) const {
+    const Level& level = levels_[j];
+    const Level& next = levels_[j + 1];
+    const MeshTopology& t = *level.topology;
+    double worst = 0.0;
+    for (Index c = t.face_first_corner(f); c < t.face_first_corner(f) + t.face_size(f); ++c)
+      for (const Index p : level.link.points_on(t.corner_edge(c)))
+        worst = std::max(worst, next.displacement[static_cast<std::size_t>(p)]);
+    if (!level.link.face_centres.empty())
+      worst = std::max(worst, next.displacement[static_cast<std::size_t>(level.link.face_centres[static_cast<std::size_t>(f)])]);
+    return worst;
+  }
 
   // The paper's rule: an edge is split when an end is mobile; and every
   // edge of a split face is split.
@@ -128,6 +197,7 @@ class LeafHierarchy {
       split_edges += level.edge_split[static_cast<std::size_t>(t.corner_edge(c))] ? 1 : 0;
     }
     if (mobile_corners >= 2 || split_edges == t.face_size(f)) return true;
+    if (threshold_ && displacement_inside(j, f) > *threshold_) return true;
     if (split_edges == 0) return false;
     const auto far = [&](Index child_vertex) { return mobile(next, child_vertex); };
     for (Index c = t.face_first_corner(f); c < t.face_first_corner(f) + t.face_size(f); ++c) {
@@ -172,6 +242,8 @@ class LeafHierarchy {
   double eps_;
   AdaptiveOptions options_;
   int steps_;  // refinement steps per level: 2 for the sqrt3 split, whose faces nest after two
+  std::optional<double> threshold_;  // interpolating schemes' displacement threshold
+  std::optional<std::size_t> settled_;  // interpolating: the first level whose displacements are all within it
   std::vector<Level> levels_;
 };
 
@@ -222,6 +294,8 @@ AdaptiveResult LeafHierarchy::result() const {
       const auto fi = static_cast<std::size_t>(f);
       if (!level.exists[fi] || level.split[fi]) continue;
       out.leaves_per_level_max = std::max(out.leaves_per_level_max, lj);
+      if (threshold_ && j + 1 < levels_.size())
+        out.largest_displacement = std::max(out.largest_displacement, displacement_inside(j, f));
       const Index n = t.face_size(f);
       const Index first = t.face_first_corner(f);
       // Corners (a mobile corner at its vertex point one level down) and
@@ -308,9 +382,17 @@ AdaptiveResult LeafHierarchy::result() const {
     out.distances[id] = level.distance[static_cast<std::size_t>(at.index)];
     out.approximated += level.approximated[static_cast<std::size_t>(at.index)];
   }
-  out.uniform_depth = static_cast<int>(levels_.size()) - 1;
+  // Uniform refinement to the same accuracy: the last level (interpolating
+  // schemes: the level before the first whose displacements are all within
+  // the threshold).
+  const std::size_t uniform = threshold_ ? *settled_ - 1 : levels_.size() - 1;
+  out.uniform_depth = static_cast<int>(uniform);
+  out.uniform_faces = levels_[uniform].mesh.face_count();
   out.steps_per_level = steps_;
-  out.uniform_faces = levels_.back().mesh.face_count();
+  if (threshold_) {
+    out.measure = DepthMeasure::surface_to_limit;
+    out.displacement_threshold = *threshold_;
+  }
   return out;
 }
 
@@ -324,9 +406,10 @@ std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const Adap
   if (scheme.fast_path.two_steps) return adaptive_unavailable(*scheme.fast_path.two_steps, options);
   if (const auto reason = limit_unavailable(scheme)) return "no adaptive refinement without limit positions, and " + *reason;
   const bool nests = is_primal(scheme.split) || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
-  if (nests && interpolates_with_wide_masks(scheme, options.depth))
-    return "no adaptive refinement for an interpolating scheme: its vertices are on the limit surface at every "
-           "level, so their distance to it says nothing about the faces in between";
+  if (!is_primal(scheme.split) && nests && interpolates_with_wide_masks(scheme, options.depth))
+    return std::string("adaptive refinement of interpolating schemes reads each face's next-level displacements "
+                       "on the quad and triangle splits' hierarchy, not the ") +
+           to_string(scheme.split) + "'s";
   if (scheme.split == SplitRule::sqrt2)
     return "adaptive refinement of the sqrt2 split walks its two-step quad split, which only 4-8 declares "
            "(Scheme::fast_path.two_steps)";
@@ -354,6 +437,16 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
     AdaptiveResult result = LeafHierarchy(mesh, *scheme.fast_path.two_steps, eps, options).result();
     result.steps_per_level = adaptive_steps_per_level(scheme);
     return result;
+  }
+  if (is_primal(scheme.split) && interpolates_with_wide_masks(scheme, options.depth)) {
+    // Every vertex is on the limit: faces are refined until their next
+    // level's vertices lie within eps (1 - r) of their linear surface, r the
+    // depth bound's rate, so that the displacements still to come add up to
+    // at most eps (docs/depth.md, "Adaptive refinement").
+    const DepthBound bound = depth_bound(mesh, scheme, options.depth);
+    double rate = 0.0;
+    for (const DepthTerm& term : bound.terms) rate = std::max(rate, term.rate);
+    return LeafHierarchy(mesh, scheme, eps, options, eps * (1.0 - rate)).result();
   }
   return LeafHierarchy(mesh, scheme, eps, options).result();
 }

@@ -355,10 +355,15 @@ run refine-kobbelt-triangles 1 refine "$meshes/tetrahedron.obj" -s kobbelt -o "$
   stderr_one_line refine-kobbelt-triangles && stderr_has refine-kobbelt-triangles "tetrahedron.obj:7: kobbelt needs a quad mesh"
 run refine-kobbelt-tension 1 refine "$meshes/cube.obj" -s kobbelt --tension -0.5 -o "$work/x.obj" &&
   stderr_one_line refine-kobbelt-tension && stderr_has refine-kobbelt-tension "kobbelt needs w > -1/2"
-run adaptive-kobbelt 1 adaptive "$meshes/cube.obj" -s kobbelt --eps 0.01 -o "$work/x.obj" &&
-  stderr_one_line adaptive-kobbelt && stderr_has adaptive-kobbelt "no adaptive refinement for an interpolating scheme"
-run adaptive-butterfly 1 adaptive "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 -o "$work/x.obj" &&
-  stderr_one_line adaptive-butterfly && stderr_has adaptive-butterfly "no adaptive refinement for an interpolating scheme"
+# Interpolating schemes: faces refined by their next level's displacements.
+run adaptive-kobbelt 0 adaptive "$meshes/cube.obj" -s kobbelt --eps 0.01 -o "$work/ak.obj" &&
+  stdout_has adaptive-kobbelt "every vertex on the limit; largest distance of a face's next-level vertices" &&
+  stdout_has adaptive-kobbelt "within eps (1 - r)"
+run adaptive-butterfly 0 adaptive "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 -o "$work/ab.obj" --json &&
+  stdout_has adaptive-butterfly '"measure": "surface-to-limit"'
+run adaptive-interpolatory-sqrt3 1 adaptive "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 --eps 0.01 -o "$work/x.obj" &&
+  stderr_one_line adaptive-interpolatory-sqrt3 &&
+  stderr_has adaptive-interpolatory-sqrt3 "adaptive refinement of interpolating schemes reads each face's next-level displacements"
 # The regular rules' own test: four-point's and Kobbelt's tension sweeps.
 for w in 0.2 0.24 0.3; do
   run "analyze-four-point-$w" 0 analyze -s four-point --tension "$w" &&

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -68,8 +69,7 @@ UniformLevel next_level(const UniformLevel& level, int number, const Scheme& sch
 }
 
 void expect_conforming_and_within(const PolygonMesh& input, const Scheme& scheme, double eps,
-                                  const std::string& name) {
-  const AdaptiveResult result = adaptive_refine(input, scheme, eps);
+                                  const std::string& name, const AdaptiveResult& result) {
   const MeshTopology t(result.mesh);
   const MeshTopology input_topology(input);
   const MeshStats in = compute_stats(input, input_topology), out = compute_stats(result.mesh, t);
@@ -107,6 +107,11 @@ void expect_conforming_and_within(const PolygonMesh& input, const Scheme& scheme
     }
     EXPECT_LE(distances[level].distances[index], eps) << name << ": vertex " << v;
   }
+}
+
+void expect_conforming_and_within(const PolygonMesh& input, const Scheme& scheme, double eps,
+                                  const std::string& name) {
+  expect_conforming_and_within(input, scheme, eps, name, adaptive_refine(input, scheme, eps));
 }
 
 TEST(Adaptive, ConformingAndWithinEpsOnBundledMeshes) {
@@ -241,13 +246,81 @@ TEST(Adaptive, OpenSqrt3MeshesAtOddLevelsAreRefused) {
   EXPECT_THROW((void)adaptive_refine(l_shape, *find_scheme("sqrt3"), 0.002, odd), InvalidInputError);
 }
 
-// Interpolating schemes with wide masks: every vertex is on the limit
-// surface, so a vertex-to-limit accuracy would keep the control mesh.
-TEST(Adaptive, RefusesInterpolatingSchemes) {
+// The distance from p to triangle (a, b, c): the nearest point is inside,
+// on an edge or at a corner (C. Ericson, Real-Time Collision Detection,
+// section 5.1.5).
+double distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return norm(p - a);
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return norm(p - b);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return norm(p - (a + (d1 / (d1 - d3)) * ab));
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return norm(p - c);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return norm(p - (a + (d2 / (d2 - d6)) * ac));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+    return norm(p - (b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b)));
+  const double denominator = 1.0 / (va + vb + vc);
+  return norm(p - (a + (vb * denominator) * ab + (vc * denominator) * ac));
+}
+
+// Interpolating schemes: every vertex is on the limit, and the faces are
+// refined until their next level's vertices lie within eps (1 - r) of them.
+// Checked independently on triangle meshes: every vertex of the uniform
+// level below the uniform depth (those vertices are on the limit) is within
+// eps of the adaptive mesh's flat triangles.
+void expect_interpolating_within(const PolygonMesh& input, const Scheme& scheme, double eps, const std::string& name) {
+  const AdaptiveResult result = adaptive_refine(input, scheme, eps);
+  expect_conforming_and_within(input, scheme, eps, name, result);
+  EXPECT_EQ(result.measure, DepthMeasure::surface_to_limit) << name;
+  EXPECT_GT(result.largest_displacement, 0.0) << name;
+  EXPECT_LE(result.largest_displacement, result.displacement_threshold) << name;
+  EXPECT_LT(result.displacement_threshold, eps) << name;
+  if (scheme.split != SplitRule::triangle) return;
+  RefineOptions deeper;
+  deeper.levels = result.uniform_depth + 1;
+  const PolygonMesh limit_points = refine(input, scheme, deeper);
+  double worst = 0.0;
+  const PolygonMesh& out = result.mesh;
+  for (const Vec3& p : limit_points.positions) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (Index f = 0; f < out.face_count() && nearest > 0.0; ++f) {
+      const auto corner = [&](Index i) { return out.positions[static_cast<std::size_t>(out.face_indices[out.face_offsets[f] + i])]; };
+      nearest = std::min(nearest, distance_to_triangle(p, corner(0), corner(1), corner(2)));
+    }
+    worst = std::max(worst, nearest);
+  }
+  EXPECT_LE(worst, eps) << name;
+  EXPECT_GT(worst, 0.0) << name;  // a curved mesh: the check could fail
+}
+
+TEST(Adaptive, InterpolatingSchemesByTheirFacesDisplacements) {
+  std::mt19937 random(17);
   const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
-  EXPECT_THROW((void)adaptive_refine(cube, kobbelt_scheme(), 0.01), InvalidInputError);
-  EXPECT_THROW((void)adaptive_refine(triangulate(cube), butterfly_scheme(), 0.01), InvalidInputError);
-  EXPECT_THROW((void)adaptive_refine(triangulate(cube), modified_butterfly_scheme(), 0.01), InvalidInputError);
+  expect_interpolating_within(triangulate(cube), butterfly_scheme(), 0.01, "cube (butterfly)");
+  expect_interpolating_within(perturbed(triangulate(cube), 0.1, random), modified_butterfly_scheme(), 0.01,
+                              "perturbed cube (modified-butterfly)");
+  expect_interpolating_within(read_mesh(test::bundled_path("tetrahedron.obj")).mesh, modified_butterfly_scheme(),
+                              0.01, "tetrahedron (modified-butterfly)");
+  expect_interpolating_within(cube, kobbelt_scheme(), 0.01, "cube (kobbelt)");
+  expect_interpolating_within(perturbed(cube, 0.1, random), kobbelt_scheme(), 0.01, "perturbed cube (kobbelt)");
+  // Spot's body is smooth, its ears and horns are not.
+  const AdaptiveResult spot =
+      adaptive_refine(triangulate(read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh), butterfly_scheme(), 0.01);
+  EXPECT_GE(static_cast<double>(spot.uniform_faces), 4.0 * spot.mesh.face_count());
+}
+
+// The interpolating schemes of the rotating splits are refused.
+TEST(Adaptive, RefusesInterpolatingSchemesOfTheRotatingSplits) {
+  const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
+  EXPECT_THROW((void)adaptive_refine(triangulate(cube), *find_scheme("interpolatory-sqrt3"), 0.01), InvalidInputError);
+  EXPECT_THROW((void)adaptive_refine(cube, *find_scheme("interpolating-sqrt2"), 0.01), InvalidInputError);
 }
 
 }  // namespace

@@ -81,6 +81,10 @@ def test_depth_and_adaptive():
     # four-eight walks its two-step quad split.
     e = subdiv.adaptive(subdiv.read(MESHES / "cube.obj"), "four-eight", 1e-2)
     assert e.steps_per_level == 2 and np.all(e.distances <= 1e-2)
+    # Interpolating schemes: by their faces' next-level displacements.
+    k = subdiv.adaptive(subdiv.read(MESHES / "cube.obj"), "kobbelt", 1e-2)
+    assert k.measure == "surface-to-limit"
+    assert 0 < k.largest_displacement <= k.displacement_threshold < 1e-2
 
 
 def test_curves():

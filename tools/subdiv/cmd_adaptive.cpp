@@ -67,18 +67,21 @@ struct AdaptiveCommandOptions {
 // eps. Nothing tighter than --max-level where the scheme or the mesh has no
 // bound (the measured distances decide then).
 // --max-level counts the levels adaptive refinement walks (4-8's and the
-// sqrt3 split's of two steps each).
+// sqrt3 split's of two steps each). Interpolating schemes read their faces'
+// displacements one level further down, and refine one level more.
 int steps_needed_at_most(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options,
                          std::optional<int>& bound_steps) {
   const int max_steps = options.max_level * adaptive_steps_per_level(scheme);
   if (depth_bound_unavailable(scheme, options.depth)) return max_steps;
+  int extra = 0;
   try {
     const DepthBound bound = depth_bound(mesh, scheme, options.depth);
     bound_steps = bound.depth_for(eps) * bound.steps_per_level;
+    if (bound.measure == DepthMeasure::surface_to_limit) extra = 2 * bound.steps_per_level;
   } catch (const InvalidInputError&) {
     return max_steps;  // a configuration without a rate: no bound
   }
-  return std::min(*bound_steps, max_steps);
+  return std::min(*bound_steps + extra, max_steps);
 }
 
 int run_adaptive(const AdaptiveCommandOptions& opt) {
@@ -137,6 +140,9 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
                 {"transition_faces", result.transition_faces},
                 {"deepest_level", result.leaves_per_level_max},
                 {"largest_distance", worst},
+                {"measure", to_string(result.measure)},
+                {"largest_displacement", result.largest_displacement},
+                {"displacement_threshold", result.displacement_threshold},
                 {"approximated", result.approximated},
                 {"bound_steps", bound_steps ? nlohmann::ordered_json(*bound_steps) : nlohmann::ordered_json(nullptr)},
                 {"uniform", {{"steps", result.uniform_depth * result.steps_per_level}, {"faces", result.uniform_faces}}},
@@ -145,12 +151,17 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
     return kExitOk;
   }
   if (opt.report.stats) std::printf("%s\n", clock.text().c_str());
-  std::printf("wrote %s: %s, %s (%lld transition faces), levels 0..%d%s, largest vertex-to-limit distance %.6g "
-              "(accuracy %g)\n",
-              opt.output.c_str(), count_of(result.mesh.vertex_count(), "vertex", "vertices").c_str(),
+  const std::string accuracy =
+      result.measure == DepthMeasure::surface_to_limit
+          ? fmt::format("every vertex on the limit; largest distance of a face's next-level vertices from its linear "
+                        "surface {:.6g}, within eps (1 - r) = {:.6g}, r the depth bound's rate (accuracy {:g})",
+                        result.largest_displacement, result.displacement_threshold, opt.eps)
+          : fmt::format("largest vertex-to-limit distance {:.6g} (accuracy {:g})", worst, opt.eps);
+  std::printf("wrote %s: %s, %s (%lld transition faces), levels 0..%d%s, %s\n", opt.output.c_str(),
+              count_of(result.mesh.vertex_count(), "vertex", "vertices").c_str(),
               count_of(result.mesh.face_count(), "face", "faces").c_str(),
               static_cast<long long>(result.transition_faces), result.leaves_per_level_max,
-              result.steps_per_level > 1 ? " of two steps" : "", worst, opt.eps);
+              result.steps_per_level > 1 ? " of two steps" : "", accuracy.c_str());
   std::printf("uniform refinement to the same accuracy: %s, %s: %.2fx the adaptive faces\n",
               count_of(result.uniform_depth * result.steps_per_level, "step", "steps").c_str(),
               count_of(result.uniform_faces, "face", "faces").c_str(), ratio);

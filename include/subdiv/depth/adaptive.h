@@ -57,6 +57,17 @@ struct AdaptiveResult {
   /// Refinement steps per level of the hierarchy walked:
   /// adaptive_steps_per_level() (2 for 4-8 and the sqrt3 split).
   int steps_per_level = 1;
+  /// What eps bounds: every vertex's distance to its limit, or (interpolating
+  /// schemes, whose vertices are all on the limit) the faces' linear surface
+  /// against the limit, through their next level's displacements.
+  DepthMeasure measure = DepthMeasure::vertex_to_limit;
+  /// Interpolating schemes: the largest distance of a leaf's next-level
+  /// vertices (its edge points and face point) from its linear surface, at
+  /// most `displacement_threshold`; 0 otherwise.
+  double largest_displacement = 0.0;
+  /// Interpolating schemes: eps (1 - r), r the depth bound's rate (the
+  /// displacements still to come then add up to at most eps); 0 otherwise.
+  double displacement_threshold = 0.0;
 };
 
 /// Loop (the paper's four face cases, with a leaf met by finer neighbours
@@ -66,7 +77,11 @@ struct AdaptiveResult {
 /// the same way by its split; the sqrt3 split in levels of two steps (its
 /// faces nest 1-to-9, a leaf met by finer neighbours is fanned from its
 /// centre); 4-8 by its two-step quad split (the same surface), in levels of
-/// two steps. Throws as refine() does, and for meshes with
+/// two steps. Interpolating schemes of the quad and triangle splits (the
+/// Butterflies, Kobbelt's), whose vertices are all on the limit, split a
+/// face while a vertex the next level makes in it lies further than
+/// eps (1 - r) from its linear surface, r the depth bound's rate
+/// (AdaptiveResult::measure). Throws as refine() does, and for meshes with
 /// hole tags (no rule here keeps a hole open). The result carries positions
 /// and faces only: no channels and no tags.
 /// \param mesh The control mesh.
@@ -79,8 +94,9 @@ struct AdaptiveResult {
 /// \throws InvalidInputError if \p eps is not positive, adaptive_unavailable()
 ///         gives a reason, the mesh has hole tags, more than
 ///         `options.max_level` levels are needed, refinement rejects the mesh
-///         (as refine() does), or limit positions fail (as limit_positions()
-///         does).
+///         (as refine() does), limit positions fail (as limit_positions()
+///         does), an interpolating scheme's depth bound fails (as
+///         depth_bound() does), or an open sqrt3 mesh starts at an odd level.
 /// \throws Error if the Schur iteration of an eigenvalue computation does not
 ///         converge.
 /// \throws std::bad_alloc if memory runs out.
@@ -95,8 +111,9 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
 int adaptive_steps_per_level(const Scheme& scheme) noexcept;
 
 /// Why adaptive_refine() refuses \p scheme whatever the mesh (schemes
-/// without limit positions, splits other than quad and triangle,
-/// interpolating schemes with wide masks), or nothing where it covers it.
+/// without limit positions, the dual and midedge splits, the sqrt2 split
+/// other than 4-8's, interpolating schemes of the sqrt3 and sqrt2 splits),
+/// or nothing where it covers it.
 /// \param scheme The scheme.
 /// \param options The refinement rules the scheme is analysed under.
 /// \return The reason, one sentence; nullopt where adaptive refinement applies.
