@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <span>
+#include <stdexcept>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -14,6 +15,7 @@
 #include <unordered_map>
 
 #include "depth/adaptive_nesting.h"
+#include "depth/nested_linear_surface.h"
 #include "subdiv/analysis/limit.h"
 #include "subdiv/core/error.h"
 #include "subdiv/depth/mesh_measures.h"
@@ -100,16 +102,21 @@ class LeafHierarchy {
     return !settled_ || last < *settled_ + 1;
   }
 
-  // Each vertex of `child` (one step of a quad or triangle split below
-  // `parent`) against the parent's linear surface there: the linear or
-  // bilinear scheme's refinement numbers its vertices alike.
+  // Each vertex of `child` (the next level below `parent`) against the
+  // parent's linear surface there: the linear or bilinear scheme's
+  // refinement numbers its vertices alike, and so does the sqrt3 split's
+  // nested surface over two steps (depth/nested_linear_surface.h).
   std::vector<double> displacements(const PolygonMesh& parent, const PolygonMesh& child) const {
     RefineOptions one = options_.depth.refine;
     one.levels = 1;
     one.start_level = step_number(levels_.size() - 1);
     one.on_level = nullptr;
     const PolygonMesh flat =
-        refine(parent, scheme_.split == SplitRule::quad ? bilinear_scheme() : linear_scheme(), one);
+        scheme_.split == SplitRule::sqrt3
+            ? detail::nested_linear_refinement(parent, one.start_level, SplitRule::sqrt3)
+            : refine(parent, scheme_.split == SplitRule::quad ? bilinear_scheme() : linear_scheme(), one);
+    if (flat.face_indices != child.face_indices)
+      throw std::logic_error("adaptive refinement: the linear surface's refinement numbers the level differently");
     std::vector<double> out(child.positions.size());
     for (std::size_t v = 0; v < out.size(); ++v) out[v] = norm(child.positions[v] - flat.positions[v]);
     return out;
@@ -406,10 +413,10 @@ std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const Adap
   if (scheme.fast_path.two_steps) return adaptive_unavailable(*scheme.fast_path.two_steps, options);
   if (const auto reason = limit_unavailable(scheme)) return "no adaptive refinement without limit positions, and " + *reason;
   const bool nests = is_primal(scheme.split) || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
-  if (!is_primal(scheme.split) && nests && interpolates_with_wide_masks(scheme, options.depth))
-    return std::string("adaptive refinement of interpolating schemes reads each face's next-level displacements "
-                       "on the quad and triangle splits' hierarchy, not the ") +
-           to_string(scheme.split) + "'s";
+  if (scheme.split == SplitRule::sqrt2 && interpolates_with_wide_masks(scheme, options.depth))
+    return "adaptive refinement of interpolating schemes reads each face's next-level displacements on a "
+           "hierarchy whose faces nest: the quad and triangle splits' and every second level of the sqrt3 split, "
+           "not yet the sqrt2 split's";
   if (scheme.split == SplitRule::sqrt2)
     return "adaptive refinement of the sqrt2 split walks its two-step quad split, which only 4-8 declares "
            "(Scheme::fast_path.two_steps)";
@@ -438,7 +445,7 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
     result.steps_per_level = adaptive_steps_per_level(scheme);
     return result;
   }
-  if (is_primal(scheme.split) && interpolates_with_wide_masks(scheme, options.depth)) {
+  if (interpolates_with_wide_masks(scheme, options.depth)) {
     // Every vertex is on the limit: faces are refined until their next
     // level's vertices lie within eps (1 - r) of their linear surface, r the
     // depth bound's rate, so that the displacements still to come add up to

@@ -361,9 +361,11 @@ run adaptive-kobbelt 0 adaptive "$meshes/cube.obj" -s kobbelt --eps 0.01 -o "$wo
   stdout_has adaptive-kobbelt "within eps (1 - r)"
 run adaptive-butterfly 0 adaptive "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 -o "$work/ab.obj" --json &&
   stdout_has adaptive-butterfly '"measure": "surface-to-limit"'
-run adaptive-interpolatory-sqrt3 1 adaptive "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 --eps 0.01 -o "$work/x.obj" &&
-  stderr_one_line adaptive-interpolatory-sqrt3 &&
-  stderr_has adaptive-interpolatory-sqrt3 "adaptive refinement of interpolating schemes reads each face's next-level displacements"
+run adaptive-interpolatory-sqrt3 0 adaptive "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 --eps 0.01 -o "$work/ai3.obj" &&
+  stdout_has adaptive-interpolatory-sqrt3 " of two steps, every vertex on the limit"
+run adaptive-interpolating-sqrt2 1 adaptive "$meshes/cube.obj" -s interpolating-sqrt2 --eps 0.01 -o "$work/x.obj" &&
+  stderr_one_line adaptive-interpolating-sqrt2 &&
+  stderr_has adaptive-interpolating-sqrt2 "not yet the sqrt2 split's"
 # The regular rules' own test: four-point's and Kobbelt's tension sweeps.
 for w in 0.2 0.24 0.3; do
   run "analyze-four-point-$w" 0 analyze -s four-point --tension "$w" &&

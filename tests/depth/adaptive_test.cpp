@@ -282,9 +282,9 @@ void expect_interpolating_within(const PolygonMesh& input, const Scheme& scheme,
   EXPECT_GT(result.largest_displacement, 0.0) << name;
   EXPECT_LE(result.largest_displacement, result.displacement_threshold) << name;
   EXPECT_LT(result.displacement_threshold, eps) << name;
-  if (scheme.split != SplitRule::triangle) return;
+  if (scheme.split != SplitRule::triangle && scheme.split != SplitRule::sqrt3) return;
   RefineOptions deeper;
-  deeper.levels = result.uniform_depth + 1;
+  deeper.levels = (result.uniform_depth + 1) * result.steps_per_level;
   const PolygonMesh limit_points = refine(input, scheme, deeper);
   double worst = 0.0;
   const PolygonMesh& out = result.mesh;
@@ -309,6 +309,11 @@ TEST(Adaptive, InterpolatingSchemesByTheirFacesDisplacements) {
   expect_interpolating_within(read_mesh(test::bundled_path("tetrahedron.obj")).mesh, modified_butterfly_scheme(),
                               0.01, "tetrahedron (modified-butterfly)");
   expect_interpolating_within(cube, kobbelt_scheme(), 0.01, "cube (kobbelt)");
+  // The sqrt3 split's, in levels of two steps.
+  expect_interpolating_within(triangulate(cube), *find_scheme("interpolatory-sqrt3"), 0.005,
+                              "cube (interpolatory-sqrt3)");
+  expect_interpolating_within(perturbed(triangulate(cube), 0.1, random), *find_scheme("interpolatory-sqrt3"), 0.01,
+                              "perturbed cube (interpolatory-sqrt3)");
   expect_interpolating_within(perturbed(cube, 0.1, random), kobbelt_scheme(), 0.01, "perturbed cube (kobbelt)");
   // Spot's body is smooth, its ears and horns are not.
   const AdaptiveResult spot =
@@ -316,10 +321,10 @@ TEST(Adaptive, InterpolatingSchemesByTheirFacesDisplacements) {
   EXPECT_GE(static_cast<double>(spot.uniform_faces), 4.0 * spot.mesh.face_count());
 }
 
-// The interpolating schemes of the rotating splits are refused.
-TEST(Adaptive, RefusesInterpolatingSchemesOfTheRotatingSplits) {
+// The sqrt2 split's interpolating scheme is refused: only 4-8 declares the
+// split's two steps as a quad split.
+TEST(Adaptive, RefusesTheInterpolatingSqrt2Scheme) {
   const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
-  EXPECT_THROW((void)adaptive_refine(triangulate(cube), *find_scheme("interpolatory-sqrt3"), 0.01), InvalidInputError);
   EXPECT_THROW((void)adaptive_refine(cube, *find_scheme("interpolating-sqrt2"), 0.01), InvalidInputError);
 }
 
