@@ -72,6 +72,9 @@ class LeafHierarchy {
       Level& parent = levels_.back();
       if (steps_ == 1) {
         parent.link = detail::one_step_nesting(*parent.topology, *steps.levels.back().map);
+      } else if (scheme_.split == SplitRule::sqrt2) {
+        parent.link = detail::two_sqrt2_steps_nesting(*parent.topology, *steps.levels[1].map, *steps.levels[2].map,
+                                                      steps.levels[2].mesh);
       } else {
         const MeshTopology middle(steps.levels[1].mesh);
         parent.link = detail::two_sqrt3_steps_nesting(*parent.topology, *steps.levels[1].map, middle,
@@ -112,8 +115,8 @@ class LeafHierarchy {
     one.start_level = step_number(levels_.size() - 1);
     one.on_level = nullptr;
     const PolygonMesh flat =
-        scheme_.split == SplitRule::sqrt3
-            ? detail::nested_linear_refinement(parent, one.start_level, SplitRule::sqrt3)
+        scheme_.split == SplitRule::sqrt3 || scheme_.split == SplitRule::sqrt2
+            ? detail::nested_linear_refinement(parent, one.start_level, scheme_.split)
             : refine(parent, scheme_.split == SplitRule::quad ? bilinear_scheme() : linear_scheme(), one);
     if (flat.face_indices != child.face_indices)
       throw std::logic_error("adaptive refinement: the linear surface's refinement numbers the level differently");
@@ -406,23 +409,19 @@ AdaptiveResult LeafHierarchy::result() const {
 }  // namespace
 
 int adaptive_steps_per_level(const Scheme& scheme) noexcept {
-  return scheme.fast_path.two_steps || scheme.split == SplitRule::sqrt3 ? 2 : 1;
+  return scheme.fast_path.two_steps || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2 ? 2 : 1;
 }
 
 std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const AdaptiveOptions& options) {
   if (scheme.fast_path.two_steps) return adaptive_unavailable(*scheme.fast_path.two_steps, options);
   if (const auto reason = limit_unavailable(scheme)) return "no adaptive refinement without limit positions, and " + *reason;
   const bool nests = is_primal(scheme.split) || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
-  if (scheme.split == SplitRule::sqrt2 && interpolates_with_wide_masks(scheme, options.depth))
-    return "adaptive refinement of interpolating schemes reads each face's next-level displacements on a "
-           "hierarchy whose faces nest: the quad and triangle splits' and every second level of the sqrt3 split, "
-           "not yet the sqrt2 split's";
-  if (scheme.split == SplitRule::sqrt2)
-    return "adaptive refinement of the sqrt2 split walks its two-step quad split, which only 4-8 declares "
-           "(Scheme::fast_path.two_steps)";
+  if (scheme.split == SplitRule::sqrt2 && !interpolates_with_wide_masks(scheme, options.depth))
+    return "adaptive refinement of an approximating scheme of the sqrt2 split walks its two-step quad split, "
+           "which only 4-8 declares (Scheme::fast_path.two_steps)";
   if (!nests)
     return std::string("adaptive refinement walks a face hierarchy whose faces nest (the quad and triangle splits' "
-                       "levels, every second level of the sqrt3 split, 4-8's two-step quad split); the child "
+                       "levels, every second level of the sqrt3 and sqrt2 splits); the child "
                        "faces of the ") +
            to_string(scheme.split) +
            " straddle parent faces at every level, so it has no such hierarchy, and transitions would need rules of "

@@ -30,7 +30,7 @@ bool has_vertex(const MeshTopology& t, Index f, Index v) {
   return std::find(face.begin(), face.end(), v) != face.end();
 }
 
-void fail(const std::string& what) { throw std::logic_error("two sqrt3 steps: " + what); }
+void fail(const std::string& what) { throw std::logic_error("two rotating steps: " + what); }
 
 }  // namespace
 
@@ -139,6 +139,44 @@ Nesting two_sqrt3_steps_nesting(const MeshTopology& level, const SplitMap& first
     if (n.child_offsets[static_cast<std::size_t>(f) + 1] != 9)
       fail("face " + std::to_string(f) + " holds " + std::to_string(n.child_offsets[static_cast<std::size_t>(f) + 1]) +
            " faces two steps down, not 9");
+    n.child_offsets[static_cast<std::size_t>(f) + 1] += n.child_offsets[static_cast<std::size_t>(f)];
+  }
+  n.children.resize(parent.size());
+  std::vector<Index> fill(n.child_offsets.begin(), n.child_offsets.end() - 1);
+  for (Index g = 0; g < next.face_count(); ++g)
+    n.children[static_cast<std::size_t>(fill[static_cast<std::size_t>(parent[static_cast<std::size_t>(g)])]++)] = g;
+  return n;
+}
+
+Nesting two_sqrt2_steps_nesting(const MeshTopology& level, const SplitMap& first, const SplitMap& second,
+                                const PolygonMesh& next) {
+  const Index nf = level.face_count(), ne = level.edge_count();
+  Nesting n;
+  n.vertex_points = second.vertex_points + first.vertex_points;
+  n.face_centres.resize(static_cast<std::size_t>(nf));
+  for (Index f = 0; f < nf; ++f) n.face_centres[static_cast<std::size_t>(f)] = second.vertex_point(first.face_point(f));
+  // The first step makes one quad per edge, in edge order; the second step's
+  // face point of that quad is the edge's midpoint.
+  n.edge_points.resize(static_cast<std::size_t>(ne));
+  for (Index e = 0; e < ne; ++e) n.edge_points[static_cast<std::size_t>(e)] = second.face_point(e);
+  // Each face two steps down holds one centre: its face's.
+  const Index centres_begin = second.vertex_point(first.face_point(0));
+  std::vector<Index> parent(static_cast<std::size_t>(next.face_count()), kInvalidIndex);
+  for (Index g = 0; g < next.face_count(); ++g)
+    for (Index c = next.face_offsets[g]; c < next.face_offsets[g + 1]; ++c)
+      if (const Index v = next.face_indices[c]; v >= centres_begin && v < centres_begin + nf) {
+        if (parent[static_cast<std::size_t>(g)] != kInvalidIndex) fail("a face two steps down holds two centres");
+        parent[static_cast<std::size_t>(g)] = v - centres_begin;
+      }
+  n.child_offsets.assign(static_cast<std::size_t>(nf) + 1, 0);
+  for (const Index f : parent) {
+    if (f == kInvalidIndex) fail("a face two steps down holds no centre");
+    ++n.child_offsets[static_cast<std::size_t>(f) + 1];
+  }
+  for (Index f = 0; f < nf; ++f) {
+    if (n.child_offsets[static_cast<std::size_t>(f) + 1] != level.face_size(f))
+      fail("face " + std::to_string(f) + " holds " + std::to_string(n.child_offsets[static_cast<std::size_t>(f) + 1]) +
+           " faces two steps down, not one per corner");
     n.child_offsets[static_cast<std::size_t>(f) + 1] += n.child_offsets[static_cast<std::size_t>(f)];
   }
   n.children.resize(parent.size());

@@ -4,7 +4,8 @@
 // splits nests: each face's children lie inside it, each edge gets its
 // midpoint. Two steps of the sqrt3 split nest too: each triangle's nine
 // grandchildren lie inside it (the 1-to-9 split), each edge gets its thirds,
-// and each face its centre (the first step's face point).
+// and each face its centre (the first step's face point); so do two steps of
+// the sqrt2 split on quads (the 1-to-4 split, each edge its midpoint).
 
 #include <span>
 #include <vector>
@@ -65,5 +66,20 @@ Nesting one_step_nesting(const MeshTopology& parent, const SplitMap& map);
 ///         the next level).
 Nesting two_sqrt3_steps_nesting(const MeshTopology& level, const SplitMap& first, const MeshTopology& middle,
                                 const SplitMap& second, const PolygonMesh& next);
+
+/// Two steps of the sqrt2 split on a closed quad mesh: each quad holds the
+/// four quads two steps down (the 1-to-4 split), each edge gets its midpoint
+/// (the second step's face point of the first step's quad across it), each
+/// face its centre (the first step's face point).
+/// \param level the level's topology (closed, quads).
+/// \param first the split from it to the middle level.
+/// \param second the split from the middle level to the next.
+/// \param next the next level's faces.
+/// \return the nesting.
+/// \throws std::logic_error if the splits' numbering is not the one described
+///         in src/topology/sqrt2_split.cpp (each face must hold four faces of
+///         the next level, each with one centre).
+Nesting two_sqrt2_steps_nesting(const MeshTopology& level, const SplitMap& first, const SplitMap& second,
+                                const PolygonMesh& next);
 
 }  // namespace subdiv::detail

@@ -314,18 +314,13 @@ TEST(Adaptive, InterpolatingSchemesByTheirFacesDisplacements) {
                               "cube (interpolatory-sqrt3)");
   expect_interpolating_within(perturbed(triangulate(cube), 0.1, random), *find_scheme("interpolatory-sqrt3"), 0.01,
                               "perturbed cube (interpolatory-sqrt3)");
+  // The sqrt2 split's, in levels of two steps (the 1-to-4 split).
+  expect_interpolating_within(cube, *find_scheme("interpolating-sqrt2"), 0.005, "cube (interpolating-sqrt2)");
   expect_interpolating_within(perturbed(cube, 0.1, random), kobbelt_scheme(), 0.01, "perturbed cube (kobbelt)");
   // Spot's body is smooth, its ears and horns are not.
   const AdaptiveResult spot =
       adaptive_refine(triangulate(read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh), butterfly_scheme(), 0.01);
   EXPECT_GE(static_cast<double>(spot.uniform_faces), 4.0 * spot.mesh.face_count());
-}
-
-// The sqrt2 split's interpolating scheme is refused: only 4-8 declares the
-// split's two steps as a quad split.
-TEST(Adaptive, RefusesTheInterpolatingSqrt2Scheme) {
-  const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
-  EXPECT_THROW((void)adaptive_refine(cube, *find_scheme("interpolating-sqrt2"), 0.01), InvalidInputError);
 }
 
 }  // namespace

@@ -77,8 +77,9 @@ struct AdaptiveResult {
 /// the same way by its split; the sqrt3 split in levels of two steps (its
 /// faces nest 1-to-9, a leaf met by finer neighbours is fanned from its
 /// centre); 4-8 by its two-step quad split (the same surface), in levels of
-/// two steps. Interpolating schemes (the Butterflies, Kobbelt's,
-/// interpolatory sqrt3), whose vertices are all on the limit, split a
+/// two steps; the sqrt2 split's interpolating scheme likewise (its faces nest
+/// 1-to-4). Interpolating schemes (the Butterflies, Kobbelt's, interpolatory
+/// sqrt3, interpolating sqrt2), whose vertices are all on the limit, split a
 /// face while a vertex the next level makes in it lies further than
 /// eps (1 - r) from its linear surface, r the depth bound's rate
 /// (AdaptiveResult::measure). Throws as refine() does, and for meshes with
@@ -104,15 +105,15 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
                                const AdaptiveOptions& options = {});
 
 /// Refinement steps per level of the hierarchy adaptive_refine() walks: 2
-/// for 4-8 (its two-step quad split) and the sqrt3 split (whose faces nest
-/// after two steps), 1 otherwise.
+/// for 4-8 (its two-step quad split) and the sqrt3 and sqrt2 splits (whose
+/// faces nest after two steps), 1 otherwise.
 /// \param scheme The scheme.
 /// \return 1 or 2.
 int adaptive_steps_per_level(const Scheme& scheme) noexcept;
 
 /// Why adaptive_refine() refuses \p scheme whatever the mesh (schemes
-/// without limit positions, the dual and midedge splits, the sqrt2 split
-/// other than 4-8's), or nothing where it covers it.
+/// without limit positions, the dual and midedge splits, approximating
+/// schemes of the sqrt2 split other than 4-8), or nothing where it covers it.
 /// \param scheme The scheme.
 /// \param options The refinement rules the scheme is analysed under.
 /// \return The reason, one sentence; nullopt where adaptive refinement applies.
