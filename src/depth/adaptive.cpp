@@ -14,6 +14,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "depth/adaptive_dual.h"
 #include "depth/adaptive_nesting.h"
 #include "depth/nested_linear_surface.h"
 #include "subdiv/analysis/limit.h"
@@ -419,13 +420,11 @@ std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const Adap
   if (scheme.split == SplitRule::sqrt2 && !interpolates_with_wide_masks(scheme, options.depth))
     return "adaptive refinement of an approximating scheme of the sqrt2 split walks its two-step quad split, "
            "which only 4-8 declares (Scheme::fast_path.two_steps)";
-  if (!nests)
-    return std::string("adaptive refinement walks a face hierarchy whose faces nest (the quad and triangle splits' "
-                       "levels, every second level of the sqrt3 and sqrt2 splits); the child "
-                       "faces of the ") +
+  if (!nests && scheme.split != SplitRule::dual)
+    return std::string("adaptive refinement covers the quad, triangle, sqrt3, sqrt2 and dual splits; the ") +
            to_string(scheme.split) +
-           " straddle parent faces at every level, so it has no such hierarchy, and transitions would need rules of "
-           "their own, not implemented";
+           "'s child faces straddle parent faces, and its two steps make a dual split of their own, which it does not "
+           "walk yet";
   return std::nullopt;
 }
 
@@ -444,6 +443,7 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
     result.steps_per_level = adaptive_steps_per_level(scheme);
     return result;
   }
+  if (scheme.split == SplitRule::dual) return detail::adaptive_refine_dual(mesh, scheme, eps, options);
   if (interpolates_with_wide_masks(scheme, options.depth)) {
     // Every vertex is on the limit: faces are refined until their next
     // level's vertices lie within eps (1 - r) of their linear surface, r the

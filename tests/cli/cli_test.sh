@@ -271,7 +271,13 @@ for k in 3 5 8; do
 done
 run analyze-doo-sabin-boundary 1 analyze -s doo-sabin --boundary -k 2 && stderr_one_line analyze-doo-sabin-boundary &&
   stderr_has analyze-doo-sabin-boundary "extraordinary faces only"
-run adaptive-doo-sabin 1 adaptive "$meshes/cube.obj" -s doo-sabin --eps 0.1 -o "$work/x.obj" && stderr_one_line adaptive-doo-sabin
+# The dual split: half E-faces and fan polygons join the levels.
+run adaptive-doo-sabin 0 adaptive "$meshes/cube.obj" -s doo-sabin --eps 0.003 -o "$work/ads.obj" &&
+  stdout_has adaptive-doo-sabin "(120 transition faces)"
+run adaptive-doo-sabin-info 0 info "$work/ads.obj" && stdout_has adaptive-doo-sabin-info "(boundary 0, non-manifold 0)" &&
+  stdout_has adaptive-doo-sabin-info "validation      ok"
+run adaptive-doo-sabin-open 1 adaptive "$meshes/l_shape.obj" -s doo-sabin --eps 0.003 -o "$work/x.obj" &&
+  stderr_one_line adaptive-doo-sabin-open
 run refine-midedge 0 refine "$meshes/cube.obj" -s midedge -l 2 -o "$work/me.obj" --stats
 stdout_has refine-midedge "level 1: 12 vertices, 14 faces" && stdout_has refine-midedge "level 2: 24 vertices, 26 faces"
 run refine-midedge-open 1 refine "$meshes/l_shape.obj" -s midedge -o "$work/x.obj" && stderr_one_line refine-midedge-open
@@ -862,7 +868,7 @@ run adaptive-sqrt3 0 adaptive "$meshes/l_shape.obj" -s sqrt3 --triangulate --eps
 run adaptive-sqrt3-info 0 info "$work/a3.obj" && stdout_has adaptive-sqrt3-info "validation      ok" &&
   stdout_has adaptive-sqrt3-info "boundary loops  1"
 run adaptive-midedge-refused 1 adaptive "$meshes/cube.obj" -s midedge --eps 0.01 -o "$work/x.obj" &&
-  stderr_one_line adaptive-midedge-refused && stderr_has adaptive-midedge-refused "straddle parent faces at every level"
+  stderr_one_line adaptive-midedge-refused && stderr_has adaptive-midedge-refused "child faces straddle parent faces"
 # Piecewise-smooth rules at an edge-only boundary: the generic masks give
 # every limit (one-face boundary vertices included), so the bound holds.
 run limit-edge-only-piecewise 0 limit "$meshes/l_shape.obj" -o "$work/x.obj" --boundary edge-only \

@@ -237,6 +237,33 @@ TEST(Adaptive, Sqrt3InLevelsOfTwoSteps) {
     ASSERT_LE(norm(composite.mesh.positions[v] - native.mesh.positions[v]), 1e-12 * test::radius(bumpy)) << v;
 }
 
+// The dual split has no face hierarchy: a face one level down exists where
+// the faces it is made from are split, and the levels meet in half E-faces
+// and fan polygons (docs/depth.md).
+TEST(Adaptive, DualSplitJoinedByHalfEFacesAndFans) {
+  std::mt19937 random(18);
+  const PolygonMesh cube = read_mesh(test::bundled_path("cube.obj")).mesh;
+  const Scheme& doo_sabin = *find_scheme("doo-sabin");
+  expect_conforming_and_within(cube, doo_sabin, 0.003, "cube (doo-sabin)");
+  expect_conforming_and_within(perturbed(cube, 0.1, random), doo_sabin, 0.003, "perturbed cube (doo-sabin)");
+  expect_conforming_and_within(spinning_top(7, 4.0, 7.0, 3.0), doo_sabin, 0.05, "spinning top (doo-sabin)");
+  const PolygonMesh spot = read_mesh(test::bundled_path("spot_control_mesh.obj")).mesh;
+  expect_conforming_and_within(spot, doo_sabin, 0.004, "spot (doo-sabin)");
+  const AdaptiveResult result = adaptive_refine(spot, doo_sabin, 0.004);
+  EXPECT_GT(result.transition_faces, 0);
+  EXPECT_GE(static_cast<double>(result.uniform_faces), 4.0 * result.mesh.face_count());
+  // Composite schemes whose level ends with a dual step.
+  for (const Scheme& scheme : {test::midpoint(2), test::gcc(4, 0.5, 0.25)})
+    expect_conforming_and_within(perturbed(cube, 0.1, random), scheme, 0.005,
+                                 "perturbed cube (" + std::string(scheme.name) + ", even degree)");
+  // Open meshes are refused.
+  PolygonMesh square;
+  square.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  square.add_face(std::vector<Index>{0, 1, 2, 3});
+  square.positions[2].z = 0.5;
+  EXPECT_THROW((void)adaptive_refine(square, doo_sabin, 0.001), InvalidInputError);
+}
+
 // An open sqrt3 mesh at an odd level: its first step trisects the boundary,
 // and the next level's faces at the boundary straddle two faces.
 TEST(Adaptive, OpenSqrt3MeshesAtOddLevelsAreRefused) {

@@ -78,7 +78,10 @@ struct AdaptiveResult {
 /// faces nest 1-to-9, a leaf met by finer neighbours is fanned from its
 /// centre); 4-8 by its two-step quad split (the same surface), in levels of
 /// two steps; the sqrt2 split's interpolating scheme likewise (its faces nest
-/// 1-to-4). Interpolating schemes (the Butterflies, Kobbelt's, interpolatory
+/// 1-to-4). The dual split (Doo-Sabin; gcc and midpoint of even degree) on
+/// closed manifold meshes: a face one level down exists where the faces it
+/// is made from are split, joined by half E-faces and fan polygons.
+/// Interpolating schemes (the Butterflies, Kobbelt's, interpolatory
 /// sqrt3, interpolating sqrt2), whose vertices are all on the limit, split a
 /// face while a vertex the next level makes in it lies further than
 /// eps (1 - r) from its linear surface, r the depth bound's rate
@@ -97,7 +100,8 @@ struct AdaptiveResult {
 ///         `options.max_level` levels are needed, refinement rejects the mesh
 ///         (as refine() does), limit positions fail (as limit_positions()
 ///         does), an interpolating scheme's depth bound fails (as
-///         depth_bound() does), or an open sqrt3 mesh starts at an odd level.
+///         depth_bound() does), an open sqrt3 mesh starts at an odd level,
+///         or a dual-split mesh is open or not manifold.
 /// \throws Error if the Schur iteration of an eigenvalue computation does not
 ///         converge.
 /// \throws std::bad_alloc if memory runs out.
@@ -112,8 +116,8 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
 int adaptive_steps_per_level(const Scheme& scheme) noexcept;
 
 /// Why adaptive_refine() refuses \p scheme whatever the mesh (schemes
-/// without limit positions, the dual and midedge splits, approximating
-/// schemes of the sqrt2 split other than 4-8), or nothing where it covers it.
+/// without limit positions, the midedge split, approximating schemes of the
+/// sqrt2 split other than 4-8), or nothing where it covers it.
 /// \param scheme The scheme.
 /// \param options The refinement rules the scheme is analysed under.
 /// \return The reason, one sentence; nullopt where adaptive refinement applies.
