@@ -410,21 +410,18 @@ AdaptiveResult LeafHierarchy::result() const {
 }  // namespace
 
 int adaptive_steps_per_level(const Scheme& scheme) noexcept {
-  return scheme.fast_path.two_steps || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2 ? 2 : 1;
+  return scheme.fast_path.two_steps || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2 ||
+                 scheme.split == SplitRule::midedge
+             ? 2
+             : 1;
 }
 
 std::optional<std::string> adaptive_unavailable(const Scheme& scheme, const AdaptiveOptions& options) {
   if (scheme.fast_path.two_steps) return adaptive_unavailable(*scheme.fast_path.two_steps, options);
   if (const auto reason = limit_unavailable(scheme)) return "no adaptive refinement without limit positions, and " + *reason;
-  const bool nests = is_primal(scheme.split) || scheme.split == SplitRule::sqrt3 || scheme.split == SplitRule::sqrt2;
   if (scheme.split == SplitRule::sqrt2 && !interpolates_with_wide_masks(scheme, options.depth))
     return "adaptive refinement of an approximating scheme of the sqrt2 split walks its two-step quad split, "
            "which only 4-8 declares (Scheme::fast_path.two_steps)";
-  if (!nests && scheme.split != SplitRule::dual)
-    return std::string("adaptive refinement covers the quad, triangle, sqrt3, sqrt2 and dual splits; the ") +
-           to_string(scheme.split) +
-           "'s child faces straddle parent faces, and its two steps make a dual split of their own, which it does not "
-           "walk yet";
   return std::nullopt;
 }
 
@@ -443,7 +440,8 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
     result.steps_per_level = adaptive_steps_per_level(scheme);
     return result;
   }
-  if (scheme.split == SplitRule::dual) return detail::adaptive_refine_dual(mesh, scheme, eps, options);
+  if (scheme.split == SplitRule::dual || scheme.split == SplitRule::midedge)
+    return detail::adaptive_refine_dual(mesh, scheme, eps, options);
   if (interpolates_with_wide_masks(scheme, options.depth)) {
     // Every vertex is on the limit: faces are refined until their next
     // level's vertices lie within eps (1 - r) of their linear surface, r the

@@ -22,6 +22,8 @@
 #include <cstdint>
 #include <optional>
 #include <set>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -36,42 +38,95 @@ namespace subdiv::detail {
 
 namespace {
 
+// What a level's elements make one level down: the F-face of each face, the
+// E-face of each edge, the V-face of each vertex (kInvalidIndex: none), the
+// corner point of each corner; and, per face one level down, what made it.
+struct DualLink {
+  enum class Maker : std::uint8_t { face, edge, vertex };
+  std::vector<Index> f_face, e_face, v_face, corner_point;
+  std::vector<std::pair<Maker, Index>> made_by;
+};
+
+// One dual split.
+DualLink dual_split_link(const MeshTopology& t, const SplitMap& map, Index child_faces) {
+  DualLink link;
+  link.made_by.assign(static_cast<std::size_t>(child_faces), {DualLink::Maker::face, kInvalidIndex});
+  for (Index f = 0; f < t.face_count(); ++f) {
+    link.f_face.push_back(f);
+    link.made_by[static_cast<std::size_t>(f)] = {DualLink::Maker::face, f};
+  }
+  for (Index e = 0; e < t.edge_count(); ++e) {
+    link.e_face.push_back(t.face_count() + e);
+    link.made_by[static_cast<std::size_t>(t.face_count() + e)] = {DualLink::Maker::edge, e};
+  }
+  Index next = t.face_count() + t.edge_count();
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    link.v_face.push_back(dual_split_has_v_face(t, v) ? next : kInvalidIndex);
+    if (link.v_face.back() != kInvalidIndex) link.made_by[static_cast<std::size_t>(next++)] = {DualLink::Maker::vertex, v};
+  }
+  for (Index c = 0; c < t.corner_count(); ++c) link.corner_point.push_back(map.corner_point(c));
+  return link;
+}
+
+// Two midedge steps (src/topology/midedge_split.cpp): the first makes a
+// vertex per edge and faces [F-faces | V-faces]; the second a vertex per
+// edge of that level (one per corner of this one) and faces [F-faces of its
+// faces | V-faces of its vertices]. So this level's face f, vertex v and
+// edge e make faces f, (F-face of V-face of v) and (V-face of vertex e).
+DualLink two_midedge_steps_link(const MeshTopology& t, const MeshTopology& middle, Index child_faces) {
+  DualLink link;
+  link.made_by.assign(static_cast<std::size_t>(child_faces), {DualLink::Maker::face, kInvalidIndex});
+  for (Index f = 0; f < t.face_count(); ++f) {
+    link.f_face.push_back(f);
+    link.made_by[static_cast<std::size_t>(f)] = {DualLink::Maker::face, f};
+  }
+  Index middle_face = t.face_count();
+  for (Index v = 0; v < t.vertex_count(); ++v) {
+    link.v_face.push_back(t.vertex_face_count(v) > 0 ? middle_face++ : kInvalidIndex);
+    if (link.v_face.back() != kInvalidIndex)
+      link.made_by[static_cast<std::size_t>(link.v_face.back())] = {DualLink::Maker::vertex, v};
+  }
+  if (middle_face != middle.face_count()) throw std::logic_error("two midedge steps: the middle faces do not follow");
+  for (Index e = 0; e < t.edge_count(); ++e) {  // middle vertex e has faces: its V-face follows the middle faces
+    link.e_face.push_back(middle.face_count() + e);
+    link.made_by[static_cast<std::size_t>(middle.face_count() + e)] = {DualLink::Maker::edge, e};
+  }
+  for (Index c = 0; c < t.corner_count(); ++c) {
+    const Index point = middle.find_edge(t.corner_edge(t.corner_prev(c)), t.corner_edge(c));
+    if (point == kInvalidIndex) throw std::logic_error("two midedge steps: a corner has no middle edge");
+    link.corner_point.push_back(point);
+  }
+  return link;
+}
+
 struct DualLevel {
   PolygonMesh mesh;
   std::optional<MeshTopology> topology;
   LimitDistances distances;
-  SplitMap map;                  // to the next level
-  std::vector<Index> v_face;     // per vertex: its V-face one level down, or kInvalidIndex
-  std::vector<Index> v_face_of;  // per V-face one level down (rank): its vertex
-  std::vector<char> exists;      // face is in the output's hierarchy
-  std::vector<char> split;       // face is replaced by the faces one level down
+  DualLink link;             // to the next level
+  std::vector<char> exists;  // face is in the output's hierarchy
+  std::vector<char> split;   // face is replaced by the faces one level down
 };
 
 class DualHierarchy {
  public:
   DualHierarchy(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options)
-      : scheme_(scheme), eps_(eps), options_(options) {
+      : scheme_(scheme), eps_(eps), options_(options), steps_(scheme.split == SplitRule::midedge ? 2 : 1) {
     add_level(mesh);
     while (levels_.back().distances.max > eps_) {
       if (static_cast<int>(levels_.size()) > options_.max_level)
         throw InvalidInputError("adaptive refinement: more than " + std::to_string(options_.max_level) +
                                 " levels needed for accuracy " + std::to_string(eps_));
-      RefineOptions one = options_.depth.refine;
-      one.levels = 1;
-      one.start_level = options_.depth.refine.start_level + static_cast<int>(levels_.size()) - 1;
-      one.on_level = nullptr;
-      Hierarchy step = refine_hierarchy(levels_.back().mesh, scheme_, one, KeepLevels::last);
+      RefineOptions period = options_.depth.refine;
+      period.levels = steps_;
+      period.start_level = step_number(levels_.size() - 1);
+      period.on_level = nullptr;
+      Hierarchy steps = refine_hierarchy(levels_.back().mesh, scheme_, period, steps_ == 1 ? KeepLevels::last : KeepLevels::all);
       DualLevel& parent = levels_.back();
-      parent.map = std::move(*step.levels.back().map);
-      const MeshTopology& t = *parent.topology;
-      parent.v_face.assign(static_cast<std::size_t>(t.vertex_count()), kInvalidIndex);
-      Index next = t.face_count() + t.edge_count();
-      for (Index v = 0; v < t.vertex_count(); ++v)
-        if (dual_split_has_v_face(t, v)) {
-          parent.v_face[static_cast<std::size_t>(v)] = next++;
-          parent.v_face_of.push_back(v);
-        }
-      add_level(std::move(step.levels.back().mesh));
+      const Index child_faces = steps.levels.back().mesh.face_count();
+      parent.link = steps_ == 1 ? dual_split_link(*parent.topology, *steps.levels.back().map, child_faces)
+                                : two_midedge_steps_link(*parent.topology, MeshTopology(steps.levels[1].mesh), child_faces);
+      add_level(std::move(steps.levels.back().mesh));
     }
     levels_.front().exists.assign(levels_.front().exists.size(), 1);
     choose_leaves();
@@ -92,13 +147,16 @@ class DualHierarchy {
     LimitOptions limit;
     limit.normals = false;
     limit.refine = options_.depth.refine;
-    limit.refine.start_level = options_.depth.refine.start_level + static_cast<int>(levels_.size());
+    limit.refine.start_level = step_number(levels_.size());
     limit.refine.on_level = nullptr;
     level.distances = resolved_limit_distances(level.mesh, scheme_, limit);
     level.exists.assign(static_cast<std::size_t>(t.face_count()), 0);
     level.split.assign(level.exists.size(), 0);
     levels_.push_back(std::move(level));
   }
+
+  // The refinement step number of hierarchy level j.
+  int step_number(std::size_t j) const { return options_.depth.refine.start_level + steps_ * static_cast<int>(j); }
 
   bool mobile(const DualLevel& level, Index v) const {
     return level.distances.distances[static_cast<std::size_t>(v)] > eps_;
@@ -121,17 +179,18 @@ class DualHierarchy {
     level.split[static_cast<std::size_t>(f)] = 1;
     changed_ = true;
     std::vector<char>& next = levels_[j + 1].exists;
-    next[static_cast<std::size_t>(f)] = 1;  // the F-face
+    const DualLink& link = level.link;
+    next[static_cast<std::size_t>(link.f_face[static_cast<std::size_t>(f)])] = 1;
+    const auto all_split = [&](std::span<const Index> corners) {
+      return std::all_of(corners.begin(), corners.end(),
+                         [&](Index s) { return level.split[static_cast<std::size_t>(t.corner_face(s))] != 0; });
+    };
     for (Index c = t.face_first_corner(f); c < t.face_first_corner(f) + t.face_size(f); ++c) {
       const Index e = t.corner_edge(c);
-      const auto sides = t.edge_corners(e);
-      if (std::all_of(sides.begin(), sides.end(), [&](Index s) { return level.split[static_cast<std::size_t>(t.corner_face(s))] != 0; }))
-        next[static_cast<std::size_t>(t.face_count() + e)] = 1;
+      if (all_split(t.edge_corners(e))) next[static_cast<std::size_t>(link.e_face[static_cast<std::size_t>(e)])] = 1;
       const Index v = t.corner_vertex(c);
-      const auto around = t.vertex_corners(v);
-      if (level.v_face[static_cast<std::size_t>(v)] != kInvalidIndex &&
-          std::all_of(around.begin(), around.end(), [&](Index s) { return level.split[static_cast<std::size_t>(t.corner_face(s))] != 0; }))
-        next[static_cast<std::size_t>(level.v_face[static_cast<std::size_t>(v)])] = 1;
+      const Index v_face = link.v_face[static_cast<std::size_t>(v)];
+      if (v_face != kInvalidIndex && all_split(t.vertex_corners(v))) next[static_cast<std::size_t>(v_face)] = 1;
     }
   }
 
@@ -140,13 +199,17 @@ class DualHierarchy {
   void ensure_exists(std::size_t j, Index g) {
     if (levels_[j].exists[static_cast<std::size_t>(g)]) return;
     const MeshTopology& t = *levels_[j - 1].topology;
-    if (g < t.face_count()) {
-      mark_split(j - 1, g);
-    } else if (g < t.face_count() + t.edge_count()) {
-      for (const Index s : t.edge_corners(g - t.face_count())) mark_split(j - 1, t.corner_face(s));
-    } else {
-      const Index v = levels_[j - 1].v_face_of[static_cast<std::size_t>(g - t.face_count() - t.edge_count())];
-      for (const Index s : t.vertex_corners(v)) mark_split(j - 1, t.corner_face(s));
+    const auto [maker, element] = levels_[j - 1].link.made_by[static_cast<std::size_t>(g)];
+    switch (maker) {
+      case DualLink::Maker::face:
+        mark_split(j - 1, element);
+        break;
+      case DualLink::Maker::edge:
+        for (const Index s : t.edge_corners(element)) mark_split(j - 1, t.corner_face(s));
+        break;
+      case DualLink::Maker::vertex:
+        for (const Index s : t.vertex_corners(element)) mark_split(j - 1, t.corner_face(s));
+        break;
     }
   }
 
@@ -168,6 +231,7 @@ class DualHierarchy {
   const Scheme& scheme_;
   double eps_;
   AdaptiveOptions options_;
+  int steps_;  // refinement steps per level: 2 for the midedge split, whose two steps are a dual split
   bool changed_ = false;
   std::vector<DualLevel> levels_;
 };
@@ -211,8 +275,9 @@ AdaptiveResult DualHierarchy::result() const {
         const Index across = t.corner_across(c);
         if (across == kInvalidIndex || is_split(t.corner_face(across))) continue;
         const Index a = t.corner_vertex(c), b = t.corner_vertex(t.corner_next(c));
-        face = {id_of(lj + 1, level.map.corner_point(t.corner_next(c))), id_of(lj + 1, level.map.corner_point(c)),
-                id_of(lj, a), id_of(lj, b)};
+        const std::vector<Index>& point = level.link.corner_point;
+        face = {id_of(lj + 1, point[static_cast<std::size_t>(t.corner_next(c))]),
+                id_of(lj + 1, point[static_cast<std::size_t>(c)]), id_of(lj, a), id_of(lj, b)};
         emit(true);
       }
     }
@@ -227,7 +292,7 @@ AdaptiveResult DualHierarchy::result() const {
       for (std::size_t step = 1; step <= k; ++step) {
         const Index c = ring[(start + step) % k];
         if (is_split(t.corner_face(c))) {
-          run.push_back(id_of(lj + 1, level.map.corner_point(c)));
+          run.push_back(id_of(lj + 1, level.link.corner_point[static_cast<std::size_t>(c)]));
           continue;
         }
         if (run.size() >= 2) {
@@ -258,6 +323,7 @@ AdaptiveResult DualHierarchy::result() const {
   }
   out.uniform_depth = static_cast<int>(levels_.size()) - 1;
   out.uniform_faces = levels_.back().mesh.face_count();
+  out.steps_per_level = steps_;
   return out;
 }
 

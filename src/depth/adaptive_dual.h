@@ -13,7 +13,8 @@
 namespace subdiv::detail {
 
 /// adaptive_refine() for a scheme of the dual split (Doo-Sabin, gcc and
-/// midpoint of even degree) on a closed manifold mesh.
+/// midpoint of even degree), or midedge in levels of two steps, on a closed
+/// manifold mesh.
 /// \param mesh The control mesh.
 /// \param scheme The scheme.
 /// \param eps The accuracy, positive.

@@ -867,8 +867,8 @@ run adaptive-sqrt3 0 adaptive "$meshes/l_shape.obj" -s sqrt3 --triangulate --eps
   stdout_has adaptive-sqrt3 "uniform refinement to the same accuracy: 8 steps"
 run adaptive-sqrt3-info 0 info "$work/a3.obj" && stdout_has adaptive-sqrt3-info "validation      ok" &&
   stdout_has adaptive-sqrt3-info "boundary loops  1"
-run adaptive-midedge-refused 1 adaptive "$meshes/cube.obj" -s midedge --eps 0.01 -o "$work/x.obj" &&
-  stderr_one_line adaptive-midedge-refused && stderr_has adaptive-midedge-refused "child faces straddle parent faces"
+run adaptive-midedge 0 adaptive "$meshes/cube.obj" -s midedge --eps 0.005 -o "$work/ame.obj" &&
+  stdout_has adaptive-midedge " of two steps, largest vertex-to-limit distance"
 # Piecewise-smooth rules at an edge-only boundary: the generic masks give
 # every limit (one-face boundary vertices included), so the bound holds.
 run limit-edge-only-piecewise 0 limit "$meshes/l_shape.obj" -o "$work/x.obj" --boundary edge-only \

@@ -252,6 +252,13 @@ TEST(Adaptive, DualSplitJoinedByHalfEFacesAndFans) {
   const AdaptiveResult result = adaptive_refine(spot, doo_sabin, 0.004);
   EXPECT_GT(result.transition_faces, 0);
   EXPECT_GE(static_cast<double>(result.uniform_faces), 4.0 * result.mesh.face_count());
+  // Midedge: two of its steps are a dual split, walked in levels of two steps.
+  const Scheme& midedge = *find_scheme("midedge");
+  expect_conforming_and_within(cube, midedge, 0.005, "cube (midedge)");
+  expect_conforming_and_within(perturbed(cube, 0.1, random), midedge, 0.005, "perturbed cube (midedge)");
+  const AdaptiveResult by_midedge = adaptive_refine(cube, midedge, 0.005);
+  EXPECT_EQ(by_midedge.steps_per_level, 2);
+  EXPECT_GT(by_midedge.transition_faces, 0);
   // Composite schemes whose level ends with a dual step.
   for (const Scheme& scheme : {test::midpoint(2), test::gcc(4, 0.5, 0.25)})
     expect_conforming_and_within(perturbed(cube, 0.1, random), scheme, 0.005,

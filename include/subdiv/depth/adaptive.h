@@ -78,9 +78,10 @@ struct AdaptiveResult {
 /// faces nest 1-to-9, a leaf met by finer neighbours is fanned from its
 /// centre); 4-8 by its two-step quad split (the same surface), in levels of
 /// two steps; the sqrt2 split's interpolating scheme likewise (its faces nest
-/// 1-to-4). The dual split (Doo-Sabin; gcc and midpoint of even degree) on
-/// closed manifold meshes: a face one level down exists where the faces it
-/// is made from are split, joined by half E-faces and fan polygons.
+/// 1-to-4). The dual split (Doo-Sabin; gcc and midpoint of even degree) and
+/// midedge (in levels of two steps, a dual split) on closed manifold meshes:
+/// a face one level down exists where the faces it is made from are split,
+/// joined by half E-faces and fan polygons.
 /// Interpolating schemes (the Butterflies, Kobbelt's, interpolatory
 /// sqrt3, interpolating sqrt2), whose vertices are all on the limit, split a
 /// face while a vertex the next level makes in it lies further than
@@ -109,15 +110,16 @@ AdaptiveResult adaptive_refine(const PolygonMesh& mesh, const Scheme& scheme, do
                                const AdaptiveOptions& options = {});
 
 /// Refinement steps per level of the hierarchy adaptive_refine() walks: 2
-/// for 4-8 (its two-step quad split) and the sqrt3 and sqrt2 splits (whose
-/// faces nest after two steps), 1 otherwise.
+/// for 4-8 (its two-step quad split), the sqrt3 and sqrt2 splits (whose
+/// faces nest after two steps) and midedge (whose two steps are a dual
+/// split), 1 otherwise.
 /// \param scheme The scheme.
 /// \return 1 or 2.
 int adaptive_steps_per_level(const Scheme& scheme) noexcept;
 
 /// Why adaptive_refine() refuses \p scheme whatever the mesh (schemes
-/// without limit positions, the midedge split, approximating schemes of the
-/// sqrt2 split other than 4-8), or nothing where it covers it.
+/// without limit positions, approximating schemes of the sqrt2 split other
+/// than 4-8), or nothing where it covers it.
 /// \param scheme The scheme.
 /// \param options The refinement rules the scheme is analysed under.
 /// \return The reason, one sentence; nullopt where adaptive refinement applies.
