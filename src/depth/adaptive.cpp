@@ -2,17 +2,21 @@
 // "Adaptive refinement"). Levels are refined uniformly (the paper's adaptive
 // scheme saves faces, not computation: it measures distances at every
 // level), then a set of leaf faces is chosen and joined without cracks.
+// A level is one step of the quad and triangle splits, or two of the sqrt3
+// and sqrt2 splits, whose faces nest after two (depth/adaptive_nesting.h);
+// the dual and midedge splits have no face hierarchy and their own
+// construction (depth/adaptive_dual.h).
 
 #include "subdiv/depth/adaptive.h"
 
 #include <algorithm>
-#include <span>
-#include <stdexcept>
 #include <cstdint>
 #include <optional>
-#include <vector>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "depth/adaptive_dual.h"
 #include "depth/adaptive_nesting.h"
@@ -252,7 +256,7 @@ class LeafHierarchy {
   const Scheme& scheme_;
   double eps_;
   AdaptiveOptions options_;
-  int steps_;  // refinement steps per level: 2 for the sqrt3 split, whose faces nest after two
+  int steps_;  // refinement steps per level: adaptive_steps_per_level()
   std::optional<double> threshold_;  // interpolating schemes' displacement threshold
   std::optional<std::size_t> settled_;  // interpolating: the first level whose displacements are all within it
   std::vector<Level> levels_;
