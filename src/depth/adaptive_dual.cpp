@@ -1,4 +1,5 @@
-// Adaptive refinement of the dual split (adaptive_dual.h; docs/depth.md).
+// Adaptive refinement of the dual split, and of midedge in levels of two
+// steps, which make a dual split (adaptive_dual.h; docs/depth.md).
 //
 // Levels are refined uniformly until every vertex is within eps of its
 // limit, as for the other splits. A level-(j + 1) face exists where the

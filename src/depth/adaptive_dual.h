@@ -1,6 +1,6 @@
 #pragma once
-// Adaptive refinement of the dual split (docs/depth.md, "Adaptive refinement
-// of the dual split"). No child face of a dual split lies inside one parent
+// Adaptive refinement of the dual split, and of midedge, whose two steps make
+// one (docs/depth.md, "Adaptive refinement of the dual split"). No child face of a dual split lies inside one parent
 // face: a face f gives its F-face, an edge its E-face and a vertex its
 // V-face, made of the corner points of the faces around them. So instead of
 // a face hierarchy, a level-(j + 1) face exists where every level-j face it is
