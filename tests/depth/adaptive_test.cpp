@@ -252,6 +252,24 @@ TEST(Adaptive, DualSplitJoinedByHalfEFacesAndFans) {
   const AdaptiveResult result = adaptive_refine(spot, doo_sabin, 0.004);
   EXPECT_GT(result.transition_faces, 0);
   EXPECT_GE(static_cast<double>(result.uniform_faces), 4.0 * result.mesh.face_count());
+  // The balance rule: every vertex of a transition (a face whose vertices
+  // come from two levels) is a corner of a leaf (a face of one level).
+  for (const AdaptiveResult& adaptive : {result, adaptive_refine(perturbed(cube, 0.1, random), doo_sabin, 0.003)}) {
+    const PolygonMesh& out = adaptive.mesh;
+    std::vector<char> in_leaf(static_cast<std::size_t>(out.vertex_count()), 0);
+    std::vector<Index> in_transition;
+    for (Index f = 0; f < out.face_count(); ++f) {
+      const auto level = [&](Index c) { return adaptive.sources[static_cast<std::size_t>(out.face_indices[c])].level; };
+      bool one_level = true;
+      for (Index c = out.face_offsets[f]; c < out.face_offsets[f + 1]; ++c) one_level = one_level && level(c) == level(out.face_offsets[f]);
+      for (Index c = out.face_offsets[f]; c < out.face_offsets[f + 1]; ++c) {
+        if (one_level) in_leaf[static_cast<std::size_t>(out.face_indices[c])] = 1;
+        else in_transition.push_back(out.face_indices[c]);
+      }
+    }
+    ASSERT_FALSE(in_transition.empty());
+    for (const Index v : in_transition) ASSERT_TRUE(in_leaf[static_cast<std::size_t>(v)]) << "vertex " << v;
+  }
   // Midedge: two of its steps are a dual split, walked in levels of two steps.
   const Scheme& midedge = *find_scheme("midedge");
   expect_conforming_and_within(cube, midedge, 0.005, "cube (midedge)");
