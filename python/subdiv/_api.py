@@ -231,8 +231,8 @@ class Adaptive:
     ``uniform_depth`` and ``uniform_faces`` (uniform refinement to the same
     eps), ``transition_faces``, ``approximated`` (output vertices whose limit
     is only approximated: eps is not established there), ``steps_per_level``
-    (refinement steps per level: 2 for four-eight and the sqrt3 split; 1
-    otherwise), ``measure`` ("vertex-to-limit", or "surface-to-limit" for
+    (refinement steps per level: 2 for four-eight, the sqrt3 and sqrt2
+    splits and midedge; 1 otherwise), ``measure`` ("vertex-to-limit", or "surface-to-limit" for
     interpolating schemes, whose faces are refined until their next level's
     vertices lie within ``displacement_threshold`` = eps (1 - r) of them,
     r the depth bound's rate; ``largest_displacement`` is the largest such

@@ -66,8 +66,8 @@ struct AdaptiveCommandOptions {
 // further than the a-priori bound's depth, at which every vertex is within
 // eps. Nothing tighter than --max-level where the scheme or the mesh has no
 // bound (the measured distances decide then).
-// --max-level counts the levels adaptive refinement walks (4-8's and the
-// sqrt3 split's of two steps each). Interpolating schemes read their faces'
+// --max-level counts the levels adaptive refinement walks (4-8's, the sqrt3
+// and sqrt2 splits' and midedge's of two steps each). Interpolating schemes read their faces'
 // displacements one level further down, and refine one level more.
 int steps_needed_at_most(const PolygonMesh& mesh, const Scheme& scheme, double eps, const AdaptiveOptions& options,
                          std::optional<int>& bound_steps) {
