@@ -2,16 +2,38 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "union_find.h"
 
 namespace subdiv {
 
-MeshStats compute_stats(const PolygonMesh& mesh, const MeshTopology& topo) {
+namespace {
+
+bool joins_itself(const MeshTopology& topo, Index e) { return topo.edge_vertices(e)[0] == topo.edge_vertices(e)[1]; }
+
+}  // namespace
+
+MeshStats compute_stats(const PolygonMesh& mesh, const MeshTopology& given) {
+  // One edge per vertex pair: the keys merge the sides along each pair.
+  std::optional<MeshTopology> merged;
+  if (given.has_coincident_edges()) merged.emplace(mesh, std::vector<Index>(static_cast<std::size_t>(mesh.corner_count()), 0));
+  const MeshTopology& topo = merged ? *merged : given;
+  Index self_edges = 0;  // sides joining a vertex to itself, each an edge of the topology
+  std::vector<Index> self_edges_at;
+  if (topo.has_coincident_edges()) {
+    self_edges_at.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+    for (Index e = 0; e < topo.edge_count(); ++e)
+      if (joins_itself(topo, e)) {
+        ++self_edges;
+        ++self_edges_at[static_cast<std::size_t>(topo.edge_vertices(e)[0])];
+      }
+  }
   MeshStats s;
   s.vertices = mesh.vertex_count();
   s.faces = mesh.face_count();
-  s.edges = topo.edge_count();
+  s.edges = topo.edge_count() - self_edges;
   s.corners = mesh.corner_count();
 
   detail::UnionFind components(mesh.face_count());  // faces joined through shared edges
@@ -36,12 +58,13 @@ MeshStats compute_stats(const PolygonMesh& mesh, const MeshTopology& topo) {
       continue;
     }
     ++used;
-    const Index k = topo.valence(v);
+    const Index k = topo.valence(v) - (self_edges_at.empty() ? 0 : 2 * self_edges_at[static_cast<std::size_t>(v)]);
     ++s.valences[k];
     s.max_valence = std::max(s.max_valence, k);
     if (topo.fan_count(v) > 1) ++s.non_manifold_vertices;
   }
   for (Index e = 0; e < topo.edge_count(); ++e) {
+    if (self_edges > 0 && joins_itself(topo, e)) continue;
     const auto sides = topo.edge_corners(e);
     for (std::size_t i = 1; i < sides.size(); ++i)
       components.unite(topo.corner_face(sides[0]), topo.corner_face(sides[i]));
@@ -51,8 +74,10 @@ MeshStats compute_stats(const PolygonMesh& mesh, const MeshTopology& topo) {
   }
   for (Index f = 0; f < mesh.face_count(); ++f)
     if (components.find(f) == f) ++s.components;
-  s.boundary_loops = static_cast<Index>(topo.boundary_loops().size());
-  s.euler_characteristic = static_cast<std::int64_t>(used) - topo.edge_count() + mesh.face_count();
+  // A boundary component of a single vertex is made of sides joining it to itself.
+  s.boundary_loops = static_cast<Index>(std::count_if(topo.boundary_loops().begin(), topo.boundary_loops().end(),
+                                                      [](const BoundaryLoop& l) { return l.vertices.size() > 1; }));
+  s.euler_characteristic = static_cast<std::int64_t>(used) - s.edges + mesh.face_count();
 
   if (!mesh.positions.empty()) {
     constexpr double inf = std::numeric_limits<double>::infinity();

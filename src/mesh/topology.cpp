@@ -1,10 +1,14 @@
 #include "subdiv/mesh/topology.h"
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
+#include <string>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+
+#include "subdiv/core/error.h"
 
 #include "../core/large_buffers.h"
 #include "../core/parallel_buckets.h"
@@ -21,10 +25,15 @@ void counts_to_offsets(std::vector<Index>& offsets) {
 
 }  // namespace
 
-MeshTopology::MeshTopology(const PolygonMesh& mesh)
+MeshTopology::MeshTopology(const PolygonMesh& mesh) : MeshTopology(mesh, std::span<const Index>()) {}
+
+MeshTopology::MeshTopology(const PolygonMesh& mesh, std::span<const Index> corner_edge_key)
     : face_offsets_(mesh.face_offsets), corner_vertex_(mesh.face_indices) {
   check_face_arrays(mesh);
   const Index nc = corner_count();
+  if (!corner_edge_key.empty() && corner_edge_key.size() != static_cast<std::size_t>(nc))
+    throw InvalidInputError("edge keys: " + std::to_string(corner_edge_key.size()) + " keys for " +
+                            std::to_string(nc) + " face corners");
   const Index first_size = face_count() > 0 ? face_size(0) : 0;
   bool uniform = first_size == 3 || first_size == 4;
   for (Index f = 1; f < face_count() && uniform; ++f) uniform = face_size(f) == first_size;
@@ -37,7 +46,7 @@ MeshTopology::MeshTopology(const PolygonMesh& mesh)
   }
   detail::assign_large(vertex_kind_, static_cast<std::size_t>(mesh.vertex_count()), VertexKind::isolated);
 
-  build_edges();
+  build_edges(corner_edge_key);
   build_vertex_incidence();
   classify_and_order_vertices();
   build_boundary_loops();
@@ -45,16 +54,18 @@ MeshTopology::MeshTopology(const PolygonMesh& mesh)
 
 // Half-edges are bucketed by their smaller vertex (a counting sort), then each
 // small bucket is sorted by (larger vertex, corner). Edges come out numbered
-// in (min, max) order, independent of face order within a bucket.
-void MeshTopology::build_edges() {
+// in (min, max) order, independent of face order within a bucket. The sides
+// along one vertex pair are one edge, but for the exceptions
+// has_coincident_edges() names (or, given keys, one edge per key); such a run
+// is regrouped by edge, the edges in order of their first side.
+void MeshTopology::build_edges(std::span<const Index> key) {
   const Index nc = corner_count();
   const Index nv = vertex_count();
   detail::assign_large(corner_edge_, static_cast<std::size_t>(nc), kInvalidIndex);
 
   const detail::ParallelBuckets by_vertex(nv);
   auto smaller_end = [this](Index c, auto&& emit) {
-    const Index a = corner_vertex_[c], b = corner_vertex_[corner_next(c)];
-    if (a != b) emit(std::min(a, b));
+    emit(std::min(corner_vertex_[c], corner_vertex_[corner_next(c)]));
   };
   std::vector<Index> bucket_offsets;
   by_vertex.count(nc, smaller_end, bucket_offsets);
@@ -63,24 +74,73 @@ void MeshTopology::build_edges() {
   by_vertex.fill(nc, smaller_end, bucket_offsets, [&](Index slot, Index c) {
     buckets[static_cast<std::size_t>(slot)] = {std::max(corner_vertex_[c], corner_vertex_[corner_next(c)]), c};
   });
+  // Whether a slot's side starts an edge (its run's sides are grouped by edge).
+  std::vector<std::uint8_t> starts_edge(buckets.size(), 0);
 
-  // Buckets are independent: sort them and count their distinct edges in
-  // parallel, number the edges by a prefix sum, then fill in parallel.
+  // Buckets are independent: sort them and count their edges in parallel,
+  // number the edges by a prefix sum, then fill in parallel.
   std::vector<Index> first_edge(static_cast<std::size_t>(nv) + 1, 0);
-  auto bucket = [&](Index v) {
-    return std::pair(buckets.begin() + bucket_offsets[v], buckets.begin() + bucket_offsets[v + 1]);
-  };
+  std::atomic<bool> coincident = false;
   tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
+    std::vector<Index> edge_of_side;  // per side of a run: its edge within the run
+    std::vector<std::pair<Index, HalfEdge>> regrouped;
     for (Index v = range.begin(); v != range.end(); ++v) {
-      auto [first, last] = bucket(v);
+      const auto first = buckets.begin() + bucket_offsets[v], last = buckets.begin() + bucket_offsets[v + 1];
       std::sort(first, last, [](const HalfEdge& l, const HalfEdge& r) {
         return l.other != r.other ? l.other < r.other : l.corner < r.corner;
       });
-      Index distinct = 0;
-      for (auto it = first; it != last; ++it) distinct += it == first || it->other != (it - 1)->other;
-      first_edge[static_cast<std::size_t>(v) + 1] = distinct;
+      Index edges = 0;
+      for (auto run = first; run != last;) {
+        auto run_end = run + 1;
+        while (run_end != last && run_end->other == run->other) ++run_end;
+        // The run's sides in corner (face) order; each gets its edge.
+        const auto n = static_cast<std::size_t>(run_end - run);
+        edge_of_side.assign(n, 0);
+        Index run_edges = 1;
+        if (run->other == v) {  // sides from v to v: an edge each
+          for (std::size_t i = 0; i < n; ++i) edge_of_side[i] = static_cast<Index>(i);
+          run_edges = static_cast<Index>(n);
+          coincident = true;
+        } else if (!key.empty()) {  // one edge per key, in order of first side
+          for (std::size_t i = 1; i < n; ++i) {
+            const Index k = key[static_cast<std::size_t>(run[static_cast<std::ptrdiff_t>(i)].corner)];
+            std::size_t j = 0;
+            while (j < i && key[static_cast<std::size_t>(run[static_cast<std::ptrdiff_t>(j)].corner)] != k) ++j;
+            edge_of_side[i] = j < i ? edge_of_side[j] : run_edges++;
+          }
+        } else {  // the first edge, unless its last side is in the same face (OpenSubdiv's rule)
+          Index last_face_of_first = corner_face(run->corner);
+          for (std::size_t i = 1; i < n; ++i) {
+            const Index f = corner_face(run[static_cast<std::ptrdiff_t>(i)].corner);
+            if (f == last_face_of_first) {
+              edge_of_side[i] = run_edges++;
+            } else {
+              last_face_of_first = f;
+            }
+          }
+        }
+        if (run_edges > 1) {
+          coincident = true;
+          regrouped.clear();
+          for (std::size_t i = 0; i < n; ++i) regrouped.emplace_back(edge_of_side[i], run[static_cast<std::ptrdiff_t>(i)]);
+          std::stable_sort(regrouped.begin(), regrouped.end(),
+                           [](const auto& l, const auto& r) { return l.first < r.first; });
+          for (std::size_t i = 0; i < n; ++i) {
+            run[static_cast<std::ptrdiff_t>(i)] = regrouped[i].second;
+            starts_edge[static_cast<std::size_t>(run - buckets.begin()) + i] =
+                i == 0 || regrouped[i].first != regrouped[i - 1].first;
+          }
+        } else {
+          starts_edge[static_cast<std::size_t>(run - buckets.begin())] = 1;
+        }
+        edges += run_edges;
+        run = run_end;
+      }
+      first_edge[static_cast<std::size_t>(v) + 1] = edges;
     }
   });
+  coincident_edges_ = coincident;
+  edges_keyed_ = !key.empty();
   counts_to_offsets(first_edge);
   const Index ne = first_edge.back();
   detail::assign_large(edge_vertices_, static_cast<std::size_t>(ne));
@@ -88,17 +148,16 @@ void MeshTopology::build_edges() {
   detail::assign_large(edge_corners_, buckets.size());
   tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
-      auto [first, last] = bucket(v);
       Index e = first_edge[static_cast<std::size_t>(v)] - 1;
-      for (auto it = first; it != last; ++it) {
-        const auto position = static_cast<Index>(it - buckets.begin());
-        if (it == first || it->other != (it - 1)->other) {
+      for (Index position = bucket_offsets[v]; position < bucket_offsets[v + 1]; ++position) {
+        const HalfEdge& side = buckets[static_cast<std::size_t>(position)];
+        if (starts_edge[static_cast<std::size_t>(position)]) {
           ++e;
-          edge_vertices_[static_cast<std::size_t>(e)] = {v, it->other};
+          edge_vertices_[static_cast<std::size_t>(e)] = {v, side.other};
           edge_corner_offsets_[static_cast<std::size_t>(e)] = position;
         }
-        corner_edge_[it->corner] = e;
-        edge_corners_[static_cast<std::size_t>(position)] = it->corner;
+        corner_edge_[side.corner] = e;
+        edge_corners_[static_cast<std::size_t>(position)] = side.corner;
       }
     }
   });
@@ -238,6 +297,35 @@ bool MeshTopology::is_flipped_edge(Index e) const noexcept {
   const auto sides = edge_corners(e);
   if (sides.size() != 2) return false;
   return corner_vertex_[sides[0]] == corner_vertex_[sides[1]];
+}
+
+bool MeshTopology::on_coincident_edge(Index v) const noexcept {
+  if (!coincident_edges_) return false;
+  const auto edges = vertex_edges(v);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const auto ends = edge_vertices_[edges[i]];
+    if (ends[0] == ends[1]) return true;
+    for (std::size_t j = 0; j < i; ++j)
+      if (edges[j] != edges[i] && edge_vertices_[edges[j]] == ends) return true;
+  }
+  return false;
+}
+
+bool MeshTopology::is_non_manifold_corner(Index v) const noexcept {
+  const bool input_defect = coincident_edges_ && !edges_keyed_ && on_coincident_edge(v);
+  if (vertex_kind_[v] == VertexKind::isolated || (ring_ordered_[v] != 0 && !input_defect)) return false;
+  // Coincident edges are numbered next to each other.
+  auto coincident = [this](Index e) {
+    const auto ends = edge_vertices_[e];
+    return ends[0] == ends[1] || (e > 0 && edge_vertices_[e - 1] == ends) ||
+           (e + 1 < edge_count() && edge_vertices_[e + 1] == ends);
+  };
+  int non_manifold = 0, boundary = 0;
+  for (const Index e : vertex_edges(v)) {
+    non_manifold += edge_face_count(e) > 2 || is_flipped_edge(e) || (coincident_edges_ && coincident(e));
+    boundary += edge_face_count(e) < 2;
+  }
+  return !(non_manifold == 2 && boundary == 0 && vertex_face_count(v) > valence(v));
 }
 
 Index MeshTopology::find_edge(Index a, Index b) const noexcept {

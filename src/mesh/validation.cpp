@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <vector>
 
 #include "subdiv/mesh/topology.h"
 
@@ -173,8 +175,13 @@ void check_channels(const PolygonMesh& mesh, Reporter& out) {
   }
 }
 
-void check_topology(const PolygonMesh& mesh, const MeshTopology& topo, const SourceLines* lines,
+// Edges here are vertex pairs, as the collection's statistics count them:
+// where faces repeating a vertex made coincident edges, they are merged.
+void check_topology(const PolygonMesh& mesh, const MeshTopology& given, const SourceLines* lines,
                     Reporter& out) {
+  std::optional<MeshTopology> merged;
+  if (given.has_coincident_edges()) merged.emplace(mesh, std::vector<Index>(static_cast<std::size_t>(mesh.corner_count()), 0));
+  const MeshTopology& topo = merged ? *merged : given;
   auto face_line = [&](Index f) { return line_of(&SourceLines::face_lines, lines, f); };
   for (Index e = 0; e < topo.edge_count(); ++e) {
     const auto [a, b] = topo.edge_vertices(e);

@@ -149,7 +149,7 @@ std::vector<double> vertex_sharpness(const PolygonMesh& mesh, const MeshTopology
 }
 
 LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo, BoundaryInterpolation boundary,
-                               CreaseMethod method) {
+                               CreaseMethod method, bool control_level) {
   const auto ne = static_cast<std::size_t>(topo.edge_count());
   const auto nv = static_cast<std::size_t>(topo.vertex_count());
   LevelCreasing out;
@@ -178,7 +178,11 @@ LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topo
   for (const CornerTag& c : mesh.tags.corners)
     if (c.vertex >= 0 && static_cast<std::size_t>(c.vertex) < nv)
       vertex_sharpness[static_cast<std::size_t>(c.vertex)] = std::max(vertex_sharpness[static_cast<std::size_t>(c.vertex)], c.sharpness);
-  auto tagged = [&](Index v) { return vertex_sharpness.empty() ? 0.0 : vertex_sharpness[static_cast<std::size_t>(v)]; };
+  // The control mesh's non-manifold vertices that OpenSubdiv sharpens count as tagged corners.
+  auto tagged = [&](Index v) {
+    if (control_level && topo.is_non_manifold_corner(v)) return kInfiniteSharpness;
+    return vertex_sharpness.empty() ? 0.0 : vertex_sharpness[static_cast<std::size_t>(v)];
+  };
 
   // Chaikin's per-end child sharpness, only where it can differ from the
   // uniform rule: some edge is semi-sharp.

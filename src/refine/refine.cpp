@@ -25,6 +25,7 @@
 #include "overflow_check.h"
 #include "piecewise_smooth.h"
 #include "../core/row_accumulator.h"
+#include "../topology/split_detail.h"
 
 namespace subdiv {
 
@@ -177,7 +178,7 @@ template <typename Fn>
 Level refine_step(const PolygonMesh& parent, const MeshTopology& topology, int l, const Scheme& scheme,
                   BoundaryInterpolation boundary, CreaseMethod method, const RefineOptions& options, Fn&& fn,
                   const SplitMap* level_split = nullptr) {
-  const LevelCreasing creasing = compute_creasing(parent, topology, boundary, method);
+  const LevelCreasing creasing = compute_creasing(parent, topology, boundary, method, l == 0);
   std::vector<double> sector_angle;
   if (options.boundary_rules == BoundaryRules::piecewise_smooth)
     sector_angle = detail::sector_angles(parent, topology, creasing);
@@ -275,6 +276,21 @@ bool takes_two_steps(const Scheme& scheme, const PolygonMesh& mesh, const MeshTo
 // each level, and refine_levels() returns an empty mesh once it says true.
 using Finish = std::function<bool(const PolygonMesh&, const MeshTopology&, int)>;
 
+// The child's topology: derived from the parent's where the split allows
+// it; built from the child's faces with the hierarchy's edges where the
+// parent has coincident edges (a level's faces alone would merge the halves
+// of an edge joining a vertex to itself); nullopt otherwise, for the caller
+// to build from the faces.
+std::optional<MeshTopology> child_topology(const MeshTopology& parent, const PolygonMesh& child, SplitRule split) {
+  if (parent.has_coincident_edges() && is_primal(split))
+    return MeshTopology(child, detail::child_edge_keys(parent, split));
+  if (split == SplitRule::quad) return MeshTopology::from_quad_split(parent, child);
+  if (split == SplitRule::triangle) return MeshTopology::from_triangle_split(parent, child);
+  if (split == SplitRule::sqrt3) return MeshTopology::from_sqrt3_split(parent, child);
+  if (split == SplitRule::sqrt2) return MeshTopology::from_sqrt2_split(parent, child);
+  return std::nullopt;
+}
+
 template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
                           const RefineOptions& options, Step&& step,
@@ -301,11 +317,7 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
     l += twice ? 2 : 1;
     if (l == last) topology.reset();
     else if (level.child_topology) topology = std::move(level.child_topology);
-    else if (level_scheme.split == SplitRule::quad) topology = MeshTopology::from_quad_split(*topology, level.child);
-    else if (level_scheme.split == SplitRule::triangle) topology = MeshTopology::from_triangle_split(*topology, level.child);
-    else if (level_scheme.split == SplitRule::sqrt3) topology = MeshTopology::from_sqrt3_split(*topology, level.child);
-    else if (level_scheme.split == SplitRule::sqrt2) topology = MeshTopology::from_sqrt2_split(*topology, level.child);
-    else topology.reset();  // built from the child's faces
+    else topology = child_topology(*topology, level.child, level_scheme.split);
     if (on_child) on_child(l, level);
     current = std::move(level.child);
     parent = &current;
@@ -580,23 +592,28 @@ MeshTopology check_and_build_topology(const PolygonMesh& mesh, const Scheme& sch
   }
   MeshTopology topology(mesh);
   ValidationReport report = validate(mesh, topology, lines);
+  // Non-manifold elements and flipped faces become sharp features where the
+  // caller allows them, and faces repeating a vertex too for the schemes
+  // that refine those as OpenSubdiv does; everything else still stops us.
+  const bool degenerate_faces = scheme.traits.degenerate_faces && !scheme.steps;
+  auto allowed = [degenerate_faces](IssueKind k) {
+    return k == IssueKind::non_manifold_edge || k == IssueKind::non_manifold_vertex ||
+           k == IssueKind::inconsistent_orientation || (degenerate_faces && k == IssueKind::repeated_vertex);
+  };
   if (options.allow_non_manifold) {
-    // Those three become sharp features; everything else still stops us.
-    for (const IssueKind k : {IssueKind::non_manifold_edge, IssueKind::non_manifold_vertex,
-                              IssueKind::inconsistent_orientation})
-      report.counts[static_cast<std::size_t>(k)] = 0;
-    std::erase_if(report.issues, [](const ValidationIssue& i) {
-      return i.kind == IssueKind::non_manifold_edge || i.kind == IssueKind::non_manifold_vertex ||
-             i.kind == IssueKind::inconsistent_orientation;
-    });
+    for (std::size_t k = 0; k < report.counts.size(); ++k)
+      if (allowed(static_cast<IssueKind>(k))) report.counts[k] = 0;
+    std::erase_if(report.issues, [&](const ValidationIssue& i) { return allowed(i.kind); });
   }
   if (!report.ok()) {
-    const bool fixable = report.count(IssueKind::non_manifold_edge) + report.count(IssueKind::non_manifold_vertex) +
-                             report.count(IssueKind::inconsistent_orientation) ==
-                         report.error_count();
-    if (fixable)
+    std::size_t fixable = 0;
+    for (std::size_t k = 0; k < report.counts.size(); ++k)
+      if (allowed(static_cast<IssueKind>(k))) fixable += report.counts[k];
+    if (fixable == report.error_count())
       for (auto& issue : report.issues)
-        issue.message += " (RuleOptions::allow_non_manifold refines it as a sharp feature)";
+        issue.message += issue.kind == IssueKind::repeated_vertex
+                             ? " (RuleOptions::allow_non_manifold refines it as OpenSubdiv does)"
+                             : " (RuleOptions::allow_non_manifold refines it as a sharp feature)";
     require_valid(report, path);
   }
   if (scheme.traits.needs_closed_mesh)

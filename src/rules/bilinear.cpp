@@ -24,7 +24,7 @@ const Scheme& bilinear_scheme() noexcept {
       .summary = "interpolating baseline, quad split: face centroids, edge midpoints",
       .citation = "bilinear refinement (OpenSubdiv's SCHEME_BILINEAR)",
       .split = SplitRule::quad,
-      .traits = {.interpolating = true},
+      .traits = {.interpolating = true, .degenerate_faces = true},
       .masks = {.face_point = face_point, .edge_point = edge_point, .vertex_point = vertex_point},
       .fast_path = {.regular_grid = &kRegularGrid}};
   return scheme;

@@ -263,7 +263,8 @@ void face_point(const LevelView& level, Index f, MaskBuilder& mask) {
   if (t.face_size(f) != 4) return detail::add_face_average(level, f, 1.0, mask);  // refused on input
   const Index first = t.face_first_corner(f);
   for (Index c = first; c < first + 4; ++c)
-    if (t.corner_edge(c) == kInvalidIndex) return detail::add_face_average(level, f, 1.0, mask);  // degenerate
+    if (t.corner_vertex(c) == t.corner_vertex(t.corner_next(c)))
+      return detail::add_face_average(level, f, 1.0, mask);  // degenerate
   add_face_line(level, first, first + 2, 0.5, mask);
   add_face_line(level, first + 1, first + 3, 0.5, mask);
 }
@@ -297,7 +298,8 @@ bool evaluate_point(const LevelView& level, const SplitMap& map, Index i, std::s
   const Index first = t.face_first_corner(f);
   Index beyond[4];
   for (Index c = 0; c < 4; ++c)
-    if (t.corner_edge(first + c) == kInvalidIndex || (beyond[c] = edge_beyond(level, first + c)) == kInvalidIndex)
+    if (t.corner_vertex(first + c) == t.corner_vertex(t.corner_next(first + c)) ||
+        (beyond[c] = edge_beyond(level, first + c)) == kInvalidIndex)
       return false;
   auto edge = [&](Index e) { return child[static_cast<std::size_t>(map.edge_point(e))]; };
   Vec3 near, far;

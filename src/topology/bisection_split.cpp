@@ -92,7 +92,7 @@ BisectionMap bisection_split(const PolygonMesh& parent, const MeshTopology& topo
       throw TopologyError("quasi 4-8 bisection needs triangles, but face " + std::to_string(f) + " has " +
                           std::to_string(topology.face_size(f)) + " vertices");
   for (Index c = 0; c < topology.corner_count(); ++c)
-    if (topology.corner_edge(c) == kInvalidIndex)
+    if (topology.corner_vertex(c) == topology.corner_vertex(topology.corner_next(c)))
       throw TopologyError("cannot split face " + std::to_string(topology.corner_face(c)) +
                           ": it repeats a vertex on consecutive corners (a degenerate face)");
   const std::vector<char> split = bisection_split_edges(topology, parent.positions, tie_tolerance);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "split_detail.h"
 #include "subdiv/topology/bisection_split.h"
@@ -57,7 +59,7 @@ void propagate_corners(const Tags& in, Index vertex_count, const SplitMap& map, 
 }  // namespace
 
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
-                    std::span<const double> child_end_sharpness, PolygonMesh& child) {
+                    std::span<const double> child_end_sharpness, int level, PolygonMesh& child) {
   const Tags& in = parent.tags;
   Tags& out = child.tags;
   out = Tags{};
@@ -102,6 +104,16 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
     if (s1 > 0.0) out.creases.push_back({map.edge_point(e), map.vertex_point(c.v1), s1});
   }
   propagate_corners(in, parent.vertex_count(), map, out);
+  // The control mesh's non-manifold vertices that OpenSubdiv sharpens are
+  // corners for good (its base level's sharpness stays), also where their
+  // children no longer look non-manifold.
+  if (level == 0)
+    for (Index v = 0; v < topology.vertex_count(); ++v)
+      if (topology.is_non_manifold_corner(v)) {
+        CornerTag corner;
+        corner.vertex = map.vertex_point(v);
+        out.corners.push_back(corner);
+      }
   if (!in.holes.empty()) {
     // Child faces of increasing parents increase: sorted parents give sorted holes.
     std::vector<Index> holes = in.holes;
@@ -115,18 +127,75 @@ void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, con
   }
 }
 
-void require_edges(const MeshTopology& topology) {
-  for (Index c = 0; c < topology.corner_count(); ++c)
-    if (topology.corner_edge(c) == kInvalidIndex)
-      throw TopologyError("cannot split face " + std::to_string(topology.corner_face(c)) +
-                          ": it repeats a vertex on consecutive corners (a degenerate face)");
+void require_edges(const MeshTopology& topology, SplitRule rule) {
+  if (is_primal(rule) || !topology.has_coincident_edges()) return;
+  for (Index c = 0; c < topology.corner_count(); ++c) {
+    const auto ends = topology.edge_vertices(topology.corner_edge(c));
+    if (ends[0] == ends[1])
+      throw TopologyError("cannot split face " + std::to_string(topology.corner_face(c)) + " by the " +
+                          to_string(rule) + ": it repeats a vertex on consecutive corners (a degenerate face)");
+  }
+}
+
+namespace {
+
+// The key of the half of edge e at the end where corner c's side starts
+// (at_start) or ends: keyed by the end vertex, so that the faces on either
+// side agree; an edge from a vertex to itself has one side, keyed by it.
+Index half_key(const MeshTopology& t, Index c, bool at_start) {
+  const Index e = t.corner_edge(c);
+  const auto ends = t.edge_vertices(e);
+  const Index at = t.corner_vertex(at_start ? c : t.corner_next(c));
+  const bool first_half = ends[0] == ends[1] ? at_start : ends[0] == at;
+  return 2 * e + (first_half ? 0 : 1);
+}
+
+}  // namespace
+
+std::vector<Index> child_edge_keys(const MeshTopology& t, SplitRule rule) {
+  if (rule != SplitRule::quad && rule != SplitRule::triangle)
+    throw InvalidInputError(std::string("edge keys: the ") + to_string(rule) + " has none");
+  const Index nc = t.corner_count();
+  // Halves take [0, 2E), edges inside faces 2E + the corner they belong to.
+  if (2 * static_cast<std::int64_t>(t.edge_count()) + nc > std::numeric_limits<Index>::max())
+    throw InvalidInputError("edge keys: the mesh is too large for them");
+  const Index inside = 2 * t.edge_count();
+  std::vector<Index> keys;
+  if (rule == SplitRule::quad) {
+    // Child face c: (vertex point, edge point of c's edge, face point, edge point of the previous edge).
+    keys.resize(4 * static_cast<std::size_t>(nc));
+    for (Index c = 0; c < nc; ++c) {
+      Index* k = keys.data() + 4 * static_cast<std::size_t>(c);
+      const Index prev = t.corner_prev(c);
+      k[0] = half_key(t, c, true);
+      k[1] = inside + c;
+      k[2] = inside + prev;
+      k[3] = half_key(t, prev, false);
+    }
+    return keys;
+  }
+  // Triangle f's children 4f + i = (corner i, its edge's point, the previous
+  // edge's point) and the centre (edge points 0, 1, 2); the centre's side j
+  // is the inner side of child j + 1.
+  keys.resize(4 * static_cast<std::size_t>(nc));
+  for (Index f = 0; f < t.face_count(); ++f) {
+    Index* k = keys.data() + 12 * static_cast<std::size_t>(f);
+    for (Index i = 0; i < 3; ++i) {
+      const Index c = 3 * f + i, prev = 3 * f + (i + 2) % 3;
+      k[3 * i + 0] = half_key(t, c, true);
+      k[3 * i + 1] = inside + c;
+      k[3 * i + 2] = half_key(t, prev, false);
+      k[9 + i] = inside + 3 * f + (i + 1) % 3;
+    }
+  }
+  return keys;
 }
 
 }  // namespace detail
 
 SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology, SplitRule rule,
                         PolygonMesh& child, const SplitOptions& options) {
-  detail::require_edges(topology);
+  detail::require_edges(topology, rule);
   if (rule == SplitRule::quasi_4_8) {  // tags and face-varying channels split by the bisection itself
     BisectionMap bisection = bisection_split(parent, topology, child);
     SplitMap map;
@@ -145,7 +214,7 @@ SplitMap split_topology(const PolygonMesh& parent, const MeshTopology& topology,
                  : rule == SplitRule::sqrt3    ? detail::sqrt3_split(topology, child, options.level)
                  : rule == SplitRule::sqrt2    ? detail::sqrt2_split(topology, child)
                                                : detail::midedge_split(topology, child);
-  detail::propagate_tags(parent, topology, map, options.child_end_sharpness, child);
+  detail::propagate_tags(parent, topology, map, options.child_end_sharpness, options.level, child);
   if (rule == SplitRule::sqrt3 && options.boundary == BoundaryInterpolation::edge_and_corner)
     detail::sqrt3_keep_one_face_corners(topology, map, child.tags);
   // Vertex channels are the masks' to fill; face-varying ones split here.

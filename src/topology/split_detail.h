@@ -33,8 +33,18 @@ void midedge_split_face_varying(const MeshTopology& topology, const PolygonMesh&
 void point_split_face_varying(const MeshTopology& topology, const SplitMap& map, const PolygonMesh& child,
                               const FaceVaryingChannel& in, FaceVaryingChannel& out);
 
+/// `level`: the parent's (0: the control mesh, whose non-manifold corners
+/// become corner tags, MeshTopology::is_non_manifold_corner()).
 void propagate_tags(const PolygonMesh& parent, const MeshTopology& topology, const SplitMap& map,
-                    std::span<const double> child_end_sharpness, PolygonMesh& child);
-void require_edges(const MeshTopology& topology);
+                    std::span<const double> child_end_sharpness, int level, PolygonMesh& child);
+void require_edges(const MeshTopology& topology, SplitRule rule);
+
+/// The edge keys of the quad or triangle split's child (MeshTopology's keyed
+/// constructor): the two halves of each parent edge and each edge inside a
+/// parent face are an edge each, as the hierarchy makes them, also where two
+/// of them join the same two vertices (the halves of an edge joining a vertex
+/// to itself).
+/// \throws InvalidInputError for other splits, or when the keys overflow.
+std::vector<Index> child_edge_keys(const MeshTopology& parent, SplitRule rule);
 
 }  // namespace subdiv::detail

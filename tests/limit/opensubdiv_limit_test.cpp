@@ -53,26 +53,8 @@ namespace Sdc = OpenSubdiv::Sdc;
 
 constexpr int kLevels = 2;
 
-struct OsdVertex {
-  double x = 0.0, y = 0.0, z = 0.0;
-  void Clear() { x = y = z = 0.0; }
-  void AddWithWeight(const OsdVertex& src, double w) {
-    x += w * src.x;
-    y += w * src.y;
-    z += w * src.z;
-  }
-  Vec3 vec() const { return {x, y, z}; }
-};
-
-double bbox_diagonal(const std::vector<Vec3>& points) {
-  Vec3 lo = points.front(), hi = points.front();
-  for (const Vec3& p : points)
-    for (int i = 0; i < 3; ++i) {
-      lo[i] = std::min(lo[i], p[i]);
-      hi[i] = std::max(hi[i], p[i]);
-    }
-  return norm(hi - lo);
-}
+using test::bbox_diagonal;
+using test::OsdVertex;
 
 Vec3 unit(const Vec3& v) { return (1.0 / norm(v)) * v; }
 

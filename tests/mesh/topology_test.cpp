@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -166,10 +168,106 @@ TEST(MeshTopology, DegenerateFacesDoNotBreakIt) {
   mesh.add_face({3});
   mesh.add_face(std::vector<Index>{});
   const MeshTopology t(mesh);
-  EXPECT_EQ(t.corner_edge(1), kInvalidIndex);
-  EXPECT_EQ(t.edge_face_count(t.find_edge(2, 3)), 2);  // both sides from the two-gon
-  EXPECT_EQ(t.corner_edge(6), kInvalidIndex);          // the one-gon's self edge
+  EXPECT_TRUE(t.has_coincident_edges());
+  EXPECT_FALSE(t.edges_keyed());
+  // The zero-length side is an edge of its own, listed twice at its vertex.
+  const Index self = t.corner_edge(1);
+  EXPECT_EQ(t.edge_vertices(self), (std::array<Index, 2>{1, 1}));
+  EXPECT_EQ(t.edge_face_count(self), 1);
+  EXPECT_EQ(std::ranges::count(t.vertex_edges(1), self), 2);
+  EXPECT_EQ(t.find_edge(1, 1), kInvalidIndex);
+  // The two-gon runs (2, 3) twice: its second side is a second edge.
+  EXPECT_NE(t.corner_edge(4), t.corner_edge(5));
+  EXPECT_EQ(t.edge_vertices(t.corner_edge(4)), t.edge_vertices(t.corner_edge(5)));
+  EXPECT_EQ(t.find_edge(2, 3), t.corner_edge(4));  // the first of them
+  EXPECT_EQ(t.edge_vertices(t.corner_edge(6)), (std::array<Index, 2>{3, 3}));  // the one-gon's self edge
   EXPECT_EQ(t.vertex_kind(1), VertexKind::non_manifold);
+  EXPECT_TRUE(t.on_coincident_edge(1));
+  EXPECT_TRUE(t.on_coincident_edge(2));
+  EXPECT_FALSE(t.on_coincident_edge(0));
+}
+
+// OpenSubdiv's Vtr::Level::completeTopologyFromFaceVertices, restated: faces
+// in order, each side joining the first edge between its two vertices
+// unless that edge's last side is in the same face, or the side joins a
+// vertex to itself; then it starts an edge. Returns each edge's corners.
+std::set<std::vector<Index>> edges_as_opensubdiv_makes_them(const PolygonMesh& mesh) {
+  std::vector<std::pair<std::array<Index, 2>, std::vector<Index>>> edges;  // (ends, corners) in creation order
+  Index c = 0;
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    const auto face = mesh.face(f);
+    for (std::size_t i = 0; i < face.size(); ++i, ++c) {
+      const Index a = face[i], b = face[(i + 1) % face.size()];
+      const std::array<Index, 2> ends{std::min(a, b), std::max(a, b)};
+      auto it = std::find_if(edges.begin(), edges.end(), [&](const auto& e) { return e.first == ends; });
+      const bool own = a == b || (it != edges.end() && mesh.face_offsets[static_cast<std::size_t>(f)] <= it->second.back());
+      if (it == edges.end() || own) edges.push_back({ends, {c}});
+      else it->second.push_back(c);
+    }
+  }
+  std::set<std::vector<Index>> out;
+  for (const auto& e : edges) out.insert(e.second);
+  return out;
+}
+
+TEST(MeshTopology, RepeatedVerticesMakeEdgesAsOpenSubdivDoes) {
+  std::mt19937 rng(2024);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int nv = 2 + static_cast<int>(rng() % 6);
+    PolygonMesh mesh;
+    mesh.positions.resize(static_cast<std::size_t>(nv));
+    const int nf = 1 + static_cast<int>(rng() % 8);
+    for (int f = 0; f < nf; ++f) {
+      std::vector<Index> face(3 + rng() % 3);
+      for (Index& v : face) v = static_cast<Index>(rng() % static_cast<unsigned>(nv));
+      mesh.add_face(face);
+    }
+    const MeshTopology t(mesh);
+    std::set<std::vector<Index>> ours;
+    for (Index e = 0; e < t.edge_count(); ++e) {
+      const auto corners = t.edge_corners(e);
+      ours.insert(std::vector<Index>(corners.begin(), corners.end()));
+      for (const Index c : corners) {
+        EXPECT_EQ(t.corner_edge(c), e);
+        const Index a = t.corner_vertex(c), b = t.corner_vertex(t.corner_next(c));
+        EXPECT_EQ(t.edge_vertices(e), (std::array<Index, 2>{std::min(a, b), std::max(a, b)}));
+      }
+      if (e > 0) {
+        EXPECT_LE(t.edge_vertices(e - 1), t.edge_vertices(e));  // numbered in (min, max) order
+      }
+    }
+    EXPECT_EQ(ours, edges_as_opensubdiv_makes_them(mesh)) << "trial " << trial;
+  }
+}
+
+TEST(MeshTopology, KeysKeepEdgesBetweenTheSameVerticesApart) {
+  // A strip of two quads sharing edge (1, 4), then the same faces with keys
+  // that make the shared side two edges (a slit).
+  PolygonMesh mesh;
+  mesh.positions.resize(6);
+  mesh.add_face({0, 1, 4, 3});
+  mesh.add_face({1, 2, 5, 4});
+  const MeshTopology joined(mesh);
+  EXPECT_FALSE(joined.has_coincident_edges());
+  EXPECT_EQ(joined.edge_count(), 7);
+  // Sides: face 0: 0-1, 1-4, 4-3, 3-0; face 1: 1-2, 2-5, 5-4, 4-1.
+  const std::vector<Index> same = {10, 11, 12, 13, 14, 15, 16, 11};
+  const MeshTopology keyed(mesh, same);
+  EXPECT_FALSE(keyed.has_coincident_edges());
+  ASSERT_EQ(keyed.edge_count(), joined.edge_count());
+  for (Index c = 0; c < mesh.corner_count(); ++c) EXPECT_EQ(keyed.corner_edge(c), joined.corner_edge(c));
+  for (Index v = 0; v < 6; ++v) EXPECT_EQ(keyed.vertex_kind(v), joined.vertex_kind(v));
+  const std::vector<Index> apart = {10, 11, 12, 13, 14, 15, 16, 17};
+  const MeshTopology slit(mesh, apart);
+  EXPECT_TRUE(slit.edges_keyed());
+  EXPECT_TRUE(slit.has_coincident_edges());
+  EXPECT_EQ(slit.edge_count(), 8);
+  EXPECT_NE(slit.corner_edge(1), slit.corner_edge(7));
+  EXPECT_TRUE(slit.is_boundary_edge(slit.corner_edge(1)));
+  EXPECT_TRUE(slit.is_boundary_edge(slit.corner_edge(7)));
+  EXPECT_TRUE(slit.on_coincident_edge(1));
+  EXPECT_FALSE(slit.on_coincident_edge(0));
+  EXPECT_THROW(MeshTopology(mesh, std::vector<Index>(3, 0)), InvalidInputError);
 }
 
 TEST(MeshTopology, IsolatedVertices) {

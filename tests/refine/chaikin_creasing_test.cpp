@@ -283,15 +283,7 @@ TEST(ChaikinCreasing, SharpnessAroundAVertexAsSdcCrease) {
   }
 }
 
-struct OsdVertex {
-  double x = 0.0, y = 0.0, z = 0.0;
-  void Clear() { x = y = z = 0.0; }
-  void AddWithWeight(const OsdVertex& src, double w) {
-    x += w * src.x;
-    y += w * src.y;
-    z += w * src.z;
-  }
-};
+using test::OsdVertex;
 
 // OpenSubdiv's refinement of `mesh` (its tags) after `levels` steps.
 std::vector<Vec3> opensubdiv_refine(const PolygonMesh& mesh, Sdc::SchemeType type, BoundaryInterpolation boundary,

@@ -196,6 +196,9 @@ TEST_P(OpenSubdivFaceVarying, RefinesLikeOpenSubdiv) {
   PolygonMesh mesh = read_mesh(path).mesh;
   if (const std::string why = test::unsupported_feature(mesh); !why.empty())
     GTEST_SKIP() << c.shape << ": not supported by subdiv yet: " << why;
+  if (test::repeats_vertices(mesh))
+    GTEST_SKIP() << c.shape << ": faces repeat a vertex; a level's faces alone lose the hierarchy's coincident edges, "
+                 << "so opensubdiv_degenerate_faces_test.cpp compares its positions, each level refined at once (its face-varying values are not compared)";
   test::round_sharpness_to_float(mesh.tags);
   mesh.face_varying_channels.resize(1);
   RefineOptions options;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -240,6 +241,45 @@ TEST(Refine, RejectsWhatItCannotRefine) {
   none.tags.boundary_interpolation = BoundaryInterpolation::none;
   EXPECT_THROW(refine(none, scheme("catmull-clark")), InvalidInputError);
   EXPECT_THROW(refine(test::cube(), scheme("catmull-clark"), levels(-1)), InvalidInputError);
+}
+
+// A face repeating a vertex (quad (2, 6, 5, 5)) refines as OpenSubdiv
+// refines it where non-manifold input is allowed, for the schemes that say
+// so; the others refuse it, naming the face.
+TEST(Refine, FacesRepeatingAVertexRefineAsOpenSubdivWhereAllowed) {
+  const PolygonMesh mesh = make_mesh({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0.5}, {3, 0, 0}},
+                                     {{0, 1, 4, 3}, {1, 2, 5, 4}, {2, 6, 5, 5}});
+  try {
+    refine(mesh, scheme("catmull-clark"));
+    FAIL();
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 2 uses a vertex more than once (RuleOptions::allow_non_manifold refines "
+                                         "it as OpenSubdiv does)"),
+              std::string::npos)
+        << e.what();
+  }
+  RefineOptions allow;
+  allow.allow_non_manifold = true;
+  EXPECT_THROW(refine(mesh, scheme("kobbelt"), allow), ValidationError);
+  const PolygonMesh one = refine(mesh, scheme("catmull-clark"), allow);
+  // 3 face points, 10 edge points (the side from 5 to 5 is an edge), 7 vertex points.
+  EXPECT_EQ(one.vertex_count(), 20);
+  EXPECT_EQ(one.face_count(), 12);
+  // Vertex 5 is a corner, and the zero-length edge's point is at it too.
+  EXPECT_EQ(std::ranges::count(one.positions, mesh.positions[5]), 2);
+  ASSERT_EQ(one.tags.corners.size(), 1u);  // it stays a corner
+  EXPECT_EQ(one.tags.corners[0].vertex, 3 + 10 + 5);
+  // Two levels at once keep the halves of that edge apart: a slit, each
+  // half a boundary edge with its own point at vertex 5's position, and the
+  // first level's point between them a crease vertex there too. A level
+  // written out and refined again joins the halves into one smooth edge.
+  allow.levels = 2;
+  const PolygonMesh two = refine(mesh, scheme("catmull-clark"), allow);
+  const PolygonMesh again = refine(one, scheme("catmull-clark"), levels(1));
+  EXPECT_EQ(two.face_count(), again.face_count());
+  EXPECT_EQ(two.vertex_count(), again.vertex_count() + 1);
+  EXPECT_EQ(std::ranges::count(two.positions, mesh.positions[5]), 4);
+  EXPECT_LT(std::ranges::count(again.positions, mesh.positions[5]), 4);
 }
 
 // Finite input near the double range: Kobbelt's negative weights grow

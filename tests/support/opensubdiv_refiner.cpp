@@ -1,8 +1,10 @@
 #include "opensubdiv_refiner.h"
 
+#include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
+#include <algorithm>
 #include <span>
 
 #include "subdiv/mesh/topology.h"
@@ -29,6 +31,32 @@ Sdc::Options::VtxBoundaryInterpolation their_boundary(const Tags& tags) {
 void round_sharpness_to_float(Tags& tags) {
   for (CreaseTag& c : tags.creases) c.sharpness = static_cast<double>(static_cast<float>(c.sharpness));
   for (CornerTag& c : tags.corners) c.sharpness = static_cast<double>(static_cast<float>(c.sharpness));
+}
+
+std::vector<std::vector<OsdVertex>> their_positions(const Far::TopologyRefiner& refiner, const PolygonMesh& mesh) {
+  std::vector<std::vector<OsdVertex>> levels(static_cast<std::size_t>(refiner.GetNumLevels()));
+  for (std::size_t l = 0; l < levels.size(); ++l)
+    levels[l].resize(static_cast<std::size_t>(refiner.GetLevel(static_cast<int>(l)).GetNumVertices()));
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    levels[0][v] = {mesh.positions[v].x, mesh.positions[v].y, mesh.positions[v].z};
+  const Far::PrimvarRefinerReal<double> primvar(refiner);
+  for (std::size_t l = 1; l < levels.size(); ++l) {
+    const OsdVertex* src = levels[l - 1].data();
+    OsdVertex* dst = levels[l].data();
+    primvar.Interpolate(static_cast<int>(l), src, dst);
+  }
+  return levels;
+}
+
+double bbox_diagonal(const std::vector<Vec3>& points) {
+  if (points.empty()) return 0.0;
+  Vec3 lo = points.front(), hi = points.front();
+  for (const Vec3& p : points)
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  return norm(hi - lo);
 }
 
 namespace {

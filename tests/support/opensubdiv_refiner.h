@@ -22,6 +22,26 @@
 
 namespace subdiv::test {
 
+/// PrimvarRefiner's vertex interface for positions, in double precision.
+struct OsdVertex {
+  double x = 0.0, y = 0.0, z = 0.0;
+  void Clear() { x = y = z = 0.0; }
+  void AddWithWeight(const OsdVertex& src, double w) {
+    x += w * src.x;
+    y += w * src.y;
+    z += w * src.z;
+  }
+  Vec3 vec() const { return {x, y, z}; }
+};
+
+/// The positions of every level of `refiner`, refined from `mesh`'s level by
+/// level through PrimvarRefiner.
+std::vector<std::vector<OsdVertex>> their_positions(const OpenSubdiv::Far::TopologyRefiner& refiner,
+                                                    const PolygonMesh& mesh);
+
+/// The length of the points' bounding-box diagonal (0 for none).
+double bbox_diagonal(const std::vector<Vec3>& points);
+
 /// OpenSubdiv's name for a boundary interpolation.
 OpenSubdiv::Sdc::Options::VtxBoundaryInterpolation boundary_option(BoundaryInterpolation boundary);
 

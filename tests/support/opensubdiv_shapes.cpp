@@ -21,14 +21,19 @@ std::string rejection(const PolygonMesh& mesh, const Scheme& scheme, const Refin
   try {
     check_refinable(mesh, scheme, options);
     return {};
-  } catch (const ValidationError& e) {
-    const ValidationReport& report = e.report();
-    if (report.error_count() == report.count(IssueKind::face_too_small) + report.count(IssueKind::repeated_vertex))
-      return std::string("degenerate faces, which subdiv does not refine: ") + e.what();
-    return std::string("refine() rejects it: ") + e.what();
   } catch (const Error& e) {
     return std::string("refine() rejects it: ") + e.what();
   }
+}
+
+bool repeats_vertices(const PolygonMesh& mesh) {
+  for (Index f = 0; f < mesh.face_count(); ++f) {
+    const auto face = mesh.face(f);
+    for (std::size_t i = 0; i < face.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (face[i] == face[j]) return true;
+  }
+  return false;
 }
 
 namespace {

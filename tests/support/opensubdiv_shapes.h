@@ -16,10 +16,16 @@ std::filesystem::path opensubdiv_shape_dir();
 /// Why subdiv cannot refine this shape as OpenSubdiv does yet, or "".
 std::string unsupported_feature(const PolygonMesh& mesh);
 
-/// Why refine() rejects the shape, or "" when it refines it. Meshes with
-/// degenerate faces (a face using a vertex twice, or with fewer than three
-/// vertices) are rejected by design; OpenSubdiv refines them.
+/// Why refine() rejects the shape, or "" when it refines it.
 std::string rejection(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options);
+
+/// Whether a face of the mesh uses a vertex more than once. Such shapes are
+/// compared by opensubdiv_degenerate_faces_test.cpp, each level refined from
+/// the control mesh: one level down, the halves of an edge joining a vertex
+/// to itself join the same two vertices without being one edge, which a
+/// level's faces alone cannot say, so the level-by-level comparisons skip
+/// them.
+bool repeats_vertices(const PolygonMesh& mesh);
 
 /// What OpenSubdiv's regression harness does with `t interpolateboundary`:
 /// absent or 0 means VTX_BOUNDARY_NONE, whose vertex positions are those of

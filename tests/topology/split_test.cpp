@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "subdiv/core/error.h"
 #include "subdiv/io/mesh_io.h"
 #include "subdiv/mesh/mesh_stats.h"
@@ -82,10 +84,26 @@ TEST(TriangleSplit, RejectsNonTriangles) {
   EXPECT_THROW(split_topology(cube, MeshTopology(cube), SplitRule::triangle, child), TopologyError);
 }
 
-TEST(Split, DegenerateFacesAreRejected) {
+// A side joining a vertex to itself is an edge: the quad split splits it
+// (child faces without a repeated vertex), the splits without rules for it
+// refuse it.
+TEST(Split, DegenerateFacesSplitByTheQuadSplitOnly) {
   PolygonMesh mesh = make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}, {{0, 1, 1, 2}});
+  const MeshTopology topology(mesh);
   PolygonMesh child;
-  EXPECT_THROW(split_topology(mesh, MeshTopology(mesh), SplitRule::quad, child), TopologyError);
+  const SplitMap map = split_topology(mesh, topology, SplitRule::quad, child);
+  EXPECT_EQ(map.child_vertex_count, 1 + 4 + 3);
+  for (Index f = 0; f < child.face_count(); ++f) {
+    const auto face = child.face(f);
+    EXPECT_EQ(std::set<Index>(face.begin(), face.end()).size(), 4u) << "child face " << f;
+  }
+  // The vertex point of 1 is tagged a corner for good.
+  ASSERT_EQ(child.tags.corners.size(), 1u);
+  EXPECT_EQ(child.tags.corners[0].vertex, map.vertex_point(1));
+  for (const SplitRule rule : {SplitRule::dual, SplitRule::midedge, SplitRule::sqrt2}) {
+    PolygonMesh other;
+    EXPECT_THROW(split_topology(mesh, topology, rule, other), TopologyError) << to_string(rule);
+  }
 }
 
 TEST(Split, TagsPropagateWithSharpnessDecrement) {

@@ -16,7 +16,7 @@ namespace subdiv {
 struct MeshStats {
   Index vertices = 0;                 ///< all vertices, isolated ones included
   Index faces = 0;                    ///< all faces, holes and degenerate ones included
-  Index edges = 0;                    ///< distinct edges (MeshTopology::edge_count())
+  Index edges = 0;                    ///< distinct vertex pairs joined by a face side (sides from a vertex to itself are not edges here)
   Index corners = 0;                  ///< face corners over all faces
   std::map<Index, Index> face_sizes;  ///< face size -> number of faces
   std::map<Index, Index> valences;    ///< valence (distinct edges) -> number of used vertices
@@ -38,7 +38,10 @@ struct MeshStats {
 };
 
 /// Computes a mesh's statistics in one pass over faces, vertices and edges
-/// (O(V + E + corners), plus the cost of the histograms).
+/// (O(V + E + corners), plus the cost of the histograms). Edges are vertex
+/// pairs here: where the topology has coincident edges (faces repeating a
+/// vertex), the statistics are taken from one that merges them, and sides
+/// joining a vertex to itself count as no edge.
 /// \pre \p topology was built from \p mesh (not checked); the mesh's face
 ///      arrays are therefore well formed.
 /// \param mesh the mesh.

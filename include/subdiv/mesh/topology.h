@@ -53,6 +53,19 @@ class MeshTopology {
   ///         (see check_face_arrays()).
   /// \throws std::bad_alloc if memory runs out.
   explicit MeshTopology(const PolygonMesh& mesh);
+  /// The same, with the edges' identity given: two face sides are one edge
+  /// when they join the same two vertices and their corners have the same
+  /// key. A refined level whose parent had coincident edges (see
+  /// has_coincident_edges()) is built this way, so that edges that are
+  /// distinct in the hierarchy stay distinct when they join the same two
+  /// vertices. Sides joining a vertex to itself are edges of their own.
+  /// \param mesh the mesh.
+  /// \param corner_edge_key a key per face corner, for the side from that
+  ///        corner to the next.
+  /// 	hrows InvalidInputError if the mesh's face arrays are malformed, or
+  ///         if the keys are not one per corner.
+  /// 	hrows std::bad_alloc if memory runs out.
+  MeshTopology(const PolygonMesh& mesh, std::span<const Index> corner_edge_key);
 
   /// The topology of `child`, the quad split of the mesh `parent` describes
   /// (child vertices [face points | edge points | vertex points], child face
@@ -116,8 +129,39 @@ class MeshTopology {
   Index face_count() const noexcept { return static_cast<Index>(face_offsets_.size()) - 1; }
   /// \return the number of face corners over all faces.
   Index corner_count() const noexcept { return static_cast<Index>(corner_vertex_.size()); }
-  /// \return the number of distinct edges (vertex pairs joined by a face side).
+  /// \return the number of edges (see edge_vertices() for which face sides share one).
   Index edge_count() const noexcept { return static_cast<Index>(edge_vertices_.size()); }
+  /// Whether two edges join the same two vertices, or an edge joins a
+  /// vertex to itself. Built from faces alone, face sides joining the same
+  /// two vertices are one edge, as in OpenSubdiv, except that a side joining
+  /// a vertex to itself (a face repeating a vertex on consecutive corners) is
+  /// an edge of its own, and so is a face's second side along an edge that
+  /// the same face already runs along last (a face visiting it twice).
+  /// \return true when find_edge() does not identify every edge.
+  bool has_coincident_edges() const noexcept { return coincident_edges_; }
+  /// Whether the edges' identity was given (the keyed constructor): then
+  /// coincident edges are distinct edges of a refined level, not defects of
+  /// the input.
+  /// \return true when built with edge keys.
+  bool edges_keyed() const noexcept { return edges_keyed_; }
+  /// Whether vertex \p v is an end of an edge joining a vertex to itself or
+  /// of two edges joining the same two vertices. O(valence^2).
+  /// \pre 0 <= v < vertex_count().
+  /// \param v the vertex.
+  /// \return true when one of its edges is such an edge.
+  bool on_coincident_edge(Index v) const noexcept;
+  /// OpenSubdiv's sharpening of non-manifold vertices on its base level
+  /// (Far::TopologyRefinerFactoryBase::prepareComponentTagsAndSharpness): a
+  /// non-manifold vertex (an unordered ring, or an end of the input's
+  /// coincident edges) becomes an infinitely sharp corner unless it lies on
+  /// an interior non-manifold crease: exactly two of its edges non-manifold
+  /// (more than two faces, flipped, joining the vertex to itself, or
+  /// coincident with another), none on the boundary, and more faces than
+  /// edges around it. O(valence).
+  /// \pre 0 <= v < vertex_count().
+  /// \param v the vertex.
+  /// \return whether the control mesh's vertex \p v is made a corner.
+  bool is_non_manifold_corner(Index v) const noexcept;
 
   // --- faces and corners -------------------------------------------------
   /// Number of corners of face \p f.
@@ -180,8 +224,8 @@ class MeshTopology {
   /// The edge from corner \p c to the next corner of its face.
   /// \pre 0 <= c < corner_count().
   /// \param c the corner.
-  /// \return the edge's index; kInvalidIndex when both corners hold the
-  ///         same vertex (a degenerate face).
+  /// \return the edge's index (an edge of its own, joining the vertex to
+  ///         itself, when both corners hold the same vertex).
   Index corner_edge(Index c) const noexcept { return corner_edge_[c]; }
   /// The corner on the other side of corner \p c's edge (it runs the edge the
   /// other way on a consistently oriented mesh).
@@ -200,7 +244,8 @@ class MeshTopology {
   /// The two vertices of edge \p e.
   /// \pre 0 <= e < edge_count().
   /// \param e the edge.
-  /// \return the two vertices, smaller index first.
+  /// \return the two vertices, smaller index first (equal for an edge
+  ///         joining a vertex to itself).
   std::array<Index, 2> edge_vertices(Index e) const noexcept { return edge_vertices_[e]; }
   /// The corners whose outgoing edge is \p e: one per face side.
   /// \pre 0 <= e < edge_count().
@@ -232,8 +277,9 @@ class MeshTopology {
   /// The edge joining \p a and \p b, by binary search (O(log E)).
   /// \param a one vertex; any value.
   /// \param b the other vertex, in either order; any value.
-  /// \return the edge's index, or kInvalidIndex when there is no such edge
-  ///         (including out-of-range vertices and a == b).
+  /// \return the edge's index (the first of coincident edges), or
+  ///         kInvalidIndex when there is no such edge (including
+  ///         out-of-range vertices and a == b).
   Index find_edge(Index a, Index b) const noexcept;
 
   // --- vertices ------------------------------------------------------------
@@ -256,10 +302,11 @@ class MeshTopology {
   /// Otherwise increasing edge indices.
   /// \pre 0 <= v < vertex_count().
   /// \param v the vertex.
-  /// \return the distinct edges at \p v; a view into the topology, valid
-  ///         as long as it lives.
+  /// \return the edges at \p v (an edge joining v to itself twice, as
+  ///         OpenSubdiv lists it); a view into the topology, valid as long
+  ///         as it lives.
   std::span<const Index> vertex_edges(Index v) const noexcept { return span_of(vertex_edge_offsets_, vertex_edges_, v); }
-  /// Number of distinct edges at vertex \p v.
+  /// Number of edges at vertex \p v (an edge joining v to itself counts twice).
   /// \pre 0 <= v < vertex_count().
   /// \param v the vertex.
   /// \return vertex_edges(v).size().
@@ -305,7 +352,7 @@ class MeshTopology {
                                         const std::vector<Index>& items, Index i) {
     return {items.data() + offsets[i], static_cast<std::size_t>(offsets[i + 1] - offsets[i])};
   }
-  void build_edges();
+  void build_edges(std::span<const Index> corner_edge_key);
   void build_vertex_incidence();
   Index local_fan_count(Index v, std::vector<Index>& parent, std::vector<std::pair<Index, Index>>& seen) const;
   void classify_and_order_vertices();
@@ -349,6 +396,8 @@ class MeshTopology {
   std::vector<Index> fan_count_;
 
   std::vector<BoundaryLoop> boundary_loops_;
+  bool coincident_edges_ = false;
+  bool edges_keyed_ = false;
 };
 
 }  // namespace subdiv

@@ -123,11 +123,18 @@ VertexRule vertex_rule_for(double vertex_sharpness, int sharp_edge_count) noexce
 /// \param topology the topology of \p mesh.
 /// \param boundary the boundary interpolation.
 /// \param method the creasing method.
+/// \param control_level whether \p mesh is the control mesh (level 0):
+///        its non-manifold vertices are then sharpened as OpenSubdiv
+///        sharpens its base level's (MeshTopology::is_non_manifold_corner();
+///        the splits tag their vertex points as corners, so that the
+///        sharpness stays). On every level a vertex whose ring is not
+///        ordered is a corner unless exactly two of its edges are
+///        infinitely sharp.
 /// \return the level's creasing.
 /// \pre \p topology was built from \p mesh (unchecked).
 /// \throws std::bad_alloc if memory runs out.
 LevelCreasing compute_creasing(const PolygonMesh& mesh, const MeshTopology& topology, BoundaryInterpolation boundary,
-                               CreaseMethod method);
+                               CreaseMethod method, bool control_level = false);
 
 /// The weight of the parent's rule where features at vertex v stop being
 /// sharp one level down (Sdc::Crease::ComputeFractionalWeightAtVertex): the

@@ -111,6 +111,9 @@ struct RefineOptions : RuleOptions {
   /// boundary treatment with the level (sqrt3_step_trisects()), so refining a
   /// level-k mesh by one more step equals refining the control mesh k + 1
   /// steps only when this says k. A hierarchy (hierarchy.h) carries it.
+  /// Only a control mesh's non-manifold vertices are sharpened as OpenSubdiv
+  /// sharpens its base level's (MeshTopology::is_non_manifold_corner()); the
+  /// levels made from it carry that sharpness as corner tags.
   int start_level = 0;
   /// Worker threads; 0 = all available. Results are identical for any count.
   int threads = 0;

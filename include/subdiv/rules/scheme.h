@@ -416,6 +416,11 @@ struct SchemeTraits {
   /// masks where a channel is continuous and the cubic B-spline along its
   /// seams; otherwise they are interpolated linearly whatever it says.
   bool smooth_face_varying = false;
+  /// Refines faces that repeat a vertex, with non-manifold input allowed
+  /// (RuleOptions::allow_non_manifold), as OpenSubdiv does: a side joining
+  /// a vertex to itself is an edge of its own, the vertices of such edges
+  /// are corners (the rules' sharp cases read no further than those edges).
+  bool degenerate_faces = false;
 };
 
 /// The masks that make one level's child vertices (which ones a split
