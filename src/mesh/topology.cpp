@@ -55,9 +55,11 @@ MeshTopology::MeshTopology(const PolygonMesh& mesh, std::span<const Index> corne
 // Half-edges are bucketed by their smaller vertex (a counting sort), then each
 // small bucket is sorted by (larger vertex, corner). Edges come out numbered
 // in (min, max) order, independent of face order within a bucket. The sides
-// along one vertex pair are one edge, but for the exceptions
+// along one vertex pair (a run) are one edge, but for the exceptions
 // has_coincident_edges() names (or, given keys, one edge per key); such a run
-// is regrouped by edge, the edges in order of their first side.
+// is regrouped by edge, the edges in order of their first side, and each
+// side that starts an edge after the run's first is marked by storing its
+// other vertex complemented (~other < 0), for the numbering pass.
 void MeshTopology::build_edges(std::span<const Index> key) {
   const Index nc = corner_count();
   const Index nv = vertex_count();
@@ -74,16 +76,14 @@ void MeshTopology::build_edges(std::span<const Index> key) {
   by_vertex.fill(nc, smaller_end, bucket_offsets, [&](Index slot, Index c) {
     buckets[static_cast<std::size_t>(slot)] = {std::max(corner_vertex_[c], corner_vertex_[corner_next(c)]), c};
   });
-  // Whether a slot's side starts an edge (its run's sides are grouped by edge).
-  std::vector<std::uint8_t> starts_edge(buckets.size(), 0);
+  auto key_of = [&](const HalfEdge& h) { return key[static_cast<std::size_t>(h.corner)]; };
 
   // Buckets are independent: sort them and count their edges in parallel,
   // number the edges by a prefix sum, then fill in parallel.
   std::vector<Index> first_edge(static_cast<std::size_t>(nv) + 1, 0);
   std::atomic<bool> coincident = false;
   tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
-    std::vector<Index> edge_of_side;  // per side of a run: its edge within the run
-    std::vector<std::pair<Index, HalfEdge>> regrouped;
+    std::vector<std::pair<Index, HalfEdge>> regrouped;  // (edge within the run, side)
     for (Index v = range.begin(); v != range.end(); ++v) {
       const auto first = buckets.begin() + bucket_offsets[v], last = buckets.begin() + bucket_offsets[v + 1];
       std::sort(first, last, [](const HalfEdge& l, const HalfEdge& r) {
@@ -93,45 +93,50 @@ void MeshTopology::build_edges(std::span<const Index> key) {
       for (auto run = first; run != last;) {
         auto run_end = run + 1;
         while (run_end != last && run_end->other == run->other) ++run_end;
-        // The run's sides in corner (face) order; each gets its edge.
         const auto n = static_cast<std::size_t>(run_end - run);
-        edge_of_side.assign(n, 0);
+        // Each side's edge within the run, sides in corner (face) order:
+        // from v to v an edge each; given keys, one per key; else the first
+        // edge, unless its last side is in the same face (OpenSubdiv's rule).
+        regrouped.clear();
         Index run_edges = 1;
-        if (run->other == v) {  // sides from v to v: an edge each
-          for (std::size_t i = 0; i < n; ++i) edge_of_side[i] = static_cast<Index>(i);
+        if (run->other == v) {
+          for (std::size_t i = 0; i < n; ++i) regrouped.emplace_back(static_cast<Index>(i), run[static_cast<std::ptrdiff_t>(i)]);
           run_edges = static_cast<Index>(n);
-          coincident = true;
-        } else if (!key.empty()) {  // one edge per key, in order of first side
-          for (std::size_t i = 1; i < n; ++i) {
-            const Index k = key[static_cast<std::size_t>(run[static_cast<std::ptrdiff_t>(i)].corner)];
+        } else if (n > 1 && !key.empty()) {
+          bool one_key = true;
+          for (std::size_t i = 1; i < n && one_key; ++i) one_key = key_of(run[static_cast<std::ptrdiff_t>(i)]) == key_of(*run);
+          for (std::size_t i = 0; i < n && !one_key; ++i) {
+            const HalfEdge& side = run[static_cast<std::ptrdiff_t>(i)];
             std::size_t j = 0;
-            while (j < i && key[static_cast<std::size_t>(run[static_cast<std::ptrdiff_t>(j)].corner)] != k) ++j;
-            edge_of_side[i] = j < i ? edge_of_side[j] : run_edges++;
+            while (j < i && key_of(regrouped[j].second) != key_of(side)) ++j;
+            regrouped.emplace_back(j < i ? regrouped[j].first : i == 0 ? 0 : run_edges++, side);
           }
-        } else {  // the first edge, unless its last side is in the same face (OpenSubdiv's rule)
-          Index last_face_of_first = corner_face(run->corner);
-          for (std::size_t i = 1; i < n; ++i) {
-            const Index f = corner_face(run[static_cast<std::ptrdiff_t>(i)].corner);
-            if (f == last_face_of_first) {
-              edge_of_side[i] = run_edges++;
-            } else {
-              last_face_of_first = f;
+        } else if (n > 1) {
+          // Counted first: the common run (one edge, one or two faces) needs no regrouping.
+          auto own_edges = [&](auto&& each) {
+            Index last_face_of_first = corner_face(run->corner);
+            Index count = 1;
+            for (std::size_t i = 0; i < n; ++i) {
+              const Index f = corner_face(run[static_cast<std::ptrdiff_t>(i)].corner);
+              const bool own = i > 0 && f == last_face_of_first;
+              if (!own) last_face_of_first = f;
+              each(i, own ? count++ : 0);
             }
-          }
+            return count;
+          };
+          run_edges = own_edges([](std::size_t, Index) {});
+          if (run_edges > 1)
+            own_edges([&](std::size_t i, Index edge) { regrouped.emplace_back(edge, run[static_cast<std::ptrdiff_t>(i)]); });
         }
-        if (run_edges > 1) {
+        if (run_edges > 1 || run->other == v) {
           coincident = true;
-          regrouped.clear();
-          for (std::size_t i = 0; i < n; ++i) regrouped.emplace_back(edge_of_side[i], run[static_cast<std::ptrdiff_t>(i)]);
           std::stable_sort(regrouped.begin(), regrouped.end(),
                            [](const auto& l, const auto& r) { return l.first < r.first; });
           for (std::size_t i = 0; i < n; ++i) {
-            run[static_cast<std::ptrdiff_t>(i)] = regrouped[i].second;
-            starts_edge[static_cast<std::size_t>(run - buckets.begin()) + i] =
-                i == 0 || regrouped[i].first != regrouped[i - 1].first;
+            HalfEdge side = regrouped[i].second;
+            if (i > 0 && regrouped[i].first != regrouped[i - 1].first) side.other = ~side.other;
+            run[static_cast<std::ptrdiff_t>(i)] = side;
           }
-        } else {
-          starts_edge[static_cast<std::size_t>(run - buckets.begin())] = 1;
         }
         edges += run_edges;
         run = run_end;
@@ -149,13 +154,16 @@ void MeshTopology::build_edges(std::span<const Index> key) {
   tbb::parallel_for(tbb::blocked_range<Index>(0, nv, 4096), [&](const tbb::blocked_range<Index>& range) {
     for (Index v = range.begin(); v != range.end(); ++v) {
       Index e = first_edge[static_cast<std::size_t>(v)] - 1;
+      Index previous = kInvalidIndex;
       for (Index position = bucket_offsets[v]; position < bucket_offsets[v + 1]; ++position) {
         const HalfEdge& side = buckets[static_cast<std::size_t>(position)];
-        if (starts_edge[static_cast<std::size_t>(position)]) {
+        const Index other = side.other < 0 ? ~side.other : side.other;
+        if (side.other < 0 || other != previous) {
           ++e;
-          edge_vertices_[static_cast<std::size_t>(e)] = {v, side.other};
+          edge_vertices_[static_cast<std::size_t>(e)] = {v, other};
           edge_corner_offsets_[static_cast<std::size_t>(e)] = position;
         }
+        previous = other;
         corner_edge_[side.corner] = e;
         edge_corners_[static_cast<std::size_t>(position)] = side.corner;
       }

@@ -351,9 +351,13 @@ void analyse(const MeshTopology& t, const FaceVaryingChannel& ch, const LevelCre
 }
 
 // The value of vertex w around an anchor: in the first of `corners`' faces
-// that holds w (else, for a mask reaching further, w's first value).
+// that holds w, at the corner next to the anchor's where the face holds w
+// twice (a face repeating a vertex); else, for a mask reaching further, w's
+// first value.
 Index value_near(const MeshTopology& t, const FaceVaryingChannel& ch, std::span<const Index> corners, Index w) {
   for (const Index c : corners) {
+    if (t.corner_vertex(t.corner_next(c)) == w) return ch.indices[at(t.corner_next(c))];
+    if (t.corner_vertex(t.corner_prev(c)) == w) return ch.indices[at(t.corner_prev(c))];
     const Index f = t.corner_face(c);
     const Index first = t.face_first_corner(f), n = t.face_size(f);
     for (Index d = first; d < first + n; ++d)
