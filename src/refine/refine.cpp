@@ -277,18 +277,20 @@ bool takes_two_steps(const Scheme& scheme, const PolygonMesh& mesh, const MeshTo
 using Finish = std::function<bool(const PolygonMesh&, const MeshTopology&, int)>;
 
 // The child's topology: derived from the parent's where the split allows
-// it; built from the child's faces with the hierarchy's edges where the
-// parent has coincident edges (a level's faces alone would merge the halves
-// of an edge joining a vertex to itself); nullopt otherwise, for the caller
+// it; else, for the quad and triangle splits, built from the child's faces
+// with the hierarchy's edges (a level's faces alone would merge the halves
+// of an edge joining a vertex to itself, or the two edges inside a pair of
+// triangles on the same three vertices); nullopt otherwise, for the caller
 // to build from the faces.
 std::optional<MeshTopology> child_topology(const MeshTopology& parent, const PolygonMesh& child, SplitRule split) {
-  if (parent.has_coincident_edges() && is_primal(split))
-    return MeshTopology(child, detail::child_edge_keys(parent, split));
-  if (split == SplitRule::quad) return MeshTopology::from_quad_split(parent, child);
-  if (split == SplitRule::triangle) return MeshTopology::from_triangle_split(parent, child);
-  if (split == SplitRule::sqrt3) return MeshTopology::from_sqrt3_split(parent, child);
-  if (split == SplitRule::sqrt2) return MeshTopology::from_sqrt2_split(parent, child);
-  return std::nullopt;
+  std::optional<MeshTopology> derived;
+  if (split == SplitRule::quad && !parent.has_coincident_edges()) derived = MeshTopology::from_quad_split(parent, child);
+  if (split == SplitRule::triangle && !parent.has_coincident_edges())
+    derived = MeshTopology::from_triangle_split(parent, child);
+  if (split == SplitRule::sqrt3) derived = MeshTopology::from_sqrt3_split(parent, child);
+  if (split == SplitRule::sqrt2) derived = MeshTopology::from_sqrt2_split(parent, child);
+  if (!derived && is_primal(split)) derived.emplace(child, detail::child_edge_keys(parent, split));
+  return derived;
 }
 
 template <typename Step>

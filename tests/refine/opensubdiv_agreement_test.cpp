@@ -22,9 +22,10 @@
 // catmark_chaikin1) for both libraries.
 //
 // Skipped shapes (the test says why): hierarchical edits (not implemented by
-// subdiv), and faces repeating a vertex (compared by
-// opensubdiv_degenerate_faces_test.cpp, each level refined at once: a level's
-// faces alone lose the hierarchy's coincident edges). Non-manifold meshes are refined with
+// subdiv), and shapes whose levels keep edges apart that join the same two
+// vertices (faces repeating a vertex, pairs of triangles on the same three
+// vertices: compared by opensubdiv_coincident_edges_test.cpp, each level
+// refined at once, as a level's faces alone lose those edges). Non-manifold meshes are refined with
 // allow_non_manifold, as OpenSubdiv refines them natively. Genuine
 // disagreements are listed, with what differs, in test::known_difference().
 //
@@ -127,9 +128,9 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   if (smooth_triangles) mesh.tags.triangle_subdivision = TriangleSubdivision::smooth;
   if (const std::string why = unsupported_feature(mesh); !why.empty())
     GTEST_SKIP() << shape << ": not supported by subdiv yet: " << why;
-  if (test::repeats_vertices(mesh))
-    GTEST_SKIP() << shape << ": faces repeat a vertex; a level's faces alone lose the hierarchy's coincident edges, "
-                 << "so opensubdiv_degenerate_faces_test.cpp compares its positions, each level refined at once";
+  if (test::levels_keep_coincident_edges(mesh, scheme.ours->split))
+    GTEST_SKIP() << shape << ": its levels keep edges apart that join the same two vertices, which a level's faces "
+                 << "alone lose, so opensubdiv_coincident_edges_test.cpp compares it, each level refined at once";
   test::round_sharpness_to_float(mesh.tags);
 
   RefineOptions options;

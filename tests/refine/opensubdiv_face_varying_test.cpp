@@ -196,9 +196,9 @@ TEST_P(OpenSubdivFaceVarying, RefinesLikeOpenSubdiv) {
   PolygonMesh mesh = read_mesh(path).mesh;
   if (const std::string why = test::unsupported_feature(mesh); !why.empty())
     GTEST_SKIP() << c.shape << ": not supported by subdiv yet: " << why;
-  if (test::repeats_vertices(mesh))
-    GTEST_SKIP() << c.shape << ": faces repeat a vertex; a level's faces alone lose the hierarchy's coincident edges, "
-                 << "so opensubdiv_degenerate_faces_test.cpp compares its positions, each level refined at once (its face-varying values are not compared)";
+  if (test::levels_keep_coincident_edges(mesh, scheme.split))
+    GTEST_SKIP() << c.shape << ": its levels keep edges apart that join the same two vertices, which a level's faces "
+                 << "alone lose, so opensubdiv_coincident_edges_test.cpp compares it, each level refined at once (its face-varying values are compared in the linear option only)";
   test::round_sharpness_to_float(mesh.tags);
   mesh.face_varying_channels.resize(1);
   RefineOptions options;

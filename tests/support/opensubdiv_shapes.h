@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "subdiv/refine/refine.h"
+#include "subdiv/topology/split.h"
 
 namespace subdiv::test {
 
@@ -19,13 +20,15 @@ std::string unsupported_feature(const PolygonMesh& mesh);
 /// Why refine() rejects the shape, or "" when it refines it.
 std::string rejection(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options);
 
-/// Whether a face of the mesh uses a vertex more than once. Such shapes are
-/// compared by opensubdiv_degenerate_faces_test.cpp, each level refined from
-/// the control mesh: one level down, the halves of an edge joining a vertex
-/// to itself join the same two vertices without being one edge, which a
-/// level's faces alone cannot say, so the level-by-level comparisons skip
-/// them.
-bool repeats_vertices(const PolygonMesh& mesh);
+/// Whether the levels of `mesh` under `split` keep edges apart that join the
+/// same two vertices: a face uses a vertex more than once (one level down,
+/// the halves of an edge joining a vertex to itself), or, for the triangle
+/// split, two triangles lie on the same three vertices (one level down, the
+/// two edges inside them). A level's faces alone cannot say that, so the
+/// level-by-level comparisons skip such shapes and
+/// opensubdiv_coincident_edges_test.cpp compares them, each level refined
+/// from the control mesh.
+bool levels_keep_coincident_edges(const PolygonMesh& mesh, SplitRule split);
 
 /// What OpenSubdiv's regression harness does with `t interpolateboundary`:
 /// absent or 0 means VTX_BOUNDARY_NONE, whose vertex positions are those of

@@ -1,19 +1,22 @@
-// Faces that repeat a vertex refine as OpenSubdiv refines them, on every
-// OpenSubdiv regression shape of the shared collection that has such faces
-// (catmark_nonman_edges, catmark_nonman_quadpole8/360, loop_nonman_edges).
+// Shapes whose levels keep edges apart that join the same two vertices
+// refine as OpenSubdiv refines them, on every OpenSubdiv regression shape of
+// the shared collection with such edges: faces that repeat a vertex
+// (catmark_nonman_edges, catmark_nonman_quadpole8/360, loop_nonman_edges)
+// and pairs of triangles on the same three vertices (loop_val2_interior).
 //
 // OpenSubdiv makes a side joining a vertex to itself an edge of its own, and
 // a face's second side along an edge it already runs along a second edge;
 // the halves of such an edge one level down join the same two vertices
-// without being one edge. A level's faces alone cannot say that, so the
-// level-by-level comparison of opensubdiv_agreement_test.cpp does not apply:
-// each level here is refined from the control mesh in one call, and
-// compared with OpenSubdiv's level of the same depth order-independently
-// (the two libraries number vertices differently, and coincident vertices,
-// the halves' edge points, cannot be told apart by their neighbours'
-// numbering either): the same vertex and face counts, and every vertex of
-// ours within 1e-12 of the bounding-box diagonal of a distinct vertex of
-// theirs.
+// without being one edge. Inside two triangles on the same three vertices,
+// the triangle split makes two edges between the same two edge points. A
+// level's faces alone cannot say that, so the level-by-level comparison of
+// opensubdiv_agreement_test.cpp does not apply: each level here is refined
+// from the control mesh in one call, and compared with OpenSubdiv's level of
+// the same depth order-independently (the two libraries number vertices
+// differently, and coincident vertices, such as the halves' edge points,
+// cannot be told apart by their neighbours' numbering either): the same
+// vertex and face counts, and every vertex of ours within 1e-12 of the
+// bounding-box diagonal of a distinct vertex of theirs.
 
 #include <gtest/gtest.h>
 
@@ -45,13 +48,17 @@ namespace Sdc = OpenSubdiv::Sdc;
 constexpr int kLevels = 3;
 constexpr double kRelativeTolerance = 1e-12;  // of the level-0 bounding-box diagonal
 
-std::vector<std::string> shapes_with_repeated_vertices() {
+std::vector<std::string> shapes_with_coincident_edges() {
   std::vector<std::string> names;
   std::error_code ec;
   if (fs::is_directory(test::opensubdiv_shape_dir(), ec))
     for (const auto& entry : fs::directory_iterator(test::opensubdiv_shape_dir(), ec))
-      if (entry.path().extension() == ".obj" && test::repeats_vertices(read_mesh(entry.path()).mesh))
-        names.push_back(entry.path().stem().string());
+      if (entry.path().extension() == ".obj") {
+        const PolygonMesh mesh = read_mesh(entry.path()).mesh;
+        const std::string name = entry.path().stem().string();
+        const SplitRule split = name.starts_with("loop_") ? SplitRule::triangle : SplitRule::quad;
+        if (test::levels_keep_coincident_edges(mesh, split)) names.push_back(name);
+      }
   std::sort(names.begin(), names.end());
   if (names.empty()) names.push_back("collection_absent");  // the test skips, saying so
   return names;
@@ -107,9 +114,9 @@ std::size_t unmatched(const std::vector<Point>& ours, const std::vector<Point>& 
   return missing;
 }
 
-class OpenSubdivDegenerateFaces : public ::testing::TestWithParam<std::string> {};
+class OpenSubdivCoincidentEdges : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(OpenSubdivDegenerateFaces, RefinesLikeOpenSubdiv) {
+TEST_P(OpenSubdivCoincidentEdges, RefinesLikeOpenSubdiv) {
   const std::string shape = GetParam();
   const fs::path path = test::opensubdiv_shape_dir() / (shape + ".obj");
   if (!fs::exists(path))
@@ -118,7 +125,7 @@ TEST_P(OpenSubdivDegenerateFaces, RefinesLikeOpenSubdiv) {
   const bool loop = shape.starts_with("loop_");
   const Scheme& scheme = loop ? loop_scheme() : catmull_clark_scheme();
   PolygonMesh mesh = read_mesh(path).mesh;
-  ASSERT_TRUE(test::repeats_vertices(mesh));
+  ASSERT_TRUE(test::levels_keep_coincident_edges(mesh, scheme.split));
   test::round_sharpness_to_float(mesh.tags);
 
   RefineOptions options;
@@ -163,7 +170,7 @@ struct OsdValue {
 // the values as OpenSubdiv's do. The smooth options still differ near faces
 // repeating a vertex (at one vertex of catmark_nonman_edges on level 1,
 // whose value OpenSubdiv keeps and subdiv smooths), so they are not compared.
-TEST_P(OpenSubdivDegenerateFaces, FaceVaryingLikeOpenSubdiv) {
+TEST_P(OpenSubdivCoincidentEdges, FaceVaryingLikeOpenSubdiv) {
   const std::string shape = GetParam();
   const fs::path path = test::opensubdiv_shape_dir() / (shape + ".obj");
   if (!fs::exists(path)) GTEST_SKIP() << "OpenSubdiv regression shapes not found at " << test::opensubdiv_shape_dir();
@@ -234,7 +241,7 @@ TEST_P(OpenSubdivDegenerateFaces, FaceVaryingLikeOpenSubdiv) {
 
 std::string param_name(const ::testing::TestParamInfo<std::string>& info) { return test::shape_test_name(info.param); }
 
-INSTANTIATE_TEST_SUITE_P(Shapes, OpenSubdivDegenerateFaces, ::testing::ValuesIn(shapes_with_repeated_vertices()),
+INSTANTIATE_TEST_SUITE_P(Shapes, OpenSubdivCoincidentEdges, ::testing::ValuesIn(shapes_with_coincident_edges()),
                          param_name);
 
 }  // namespace
