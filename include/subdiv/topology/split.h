@@ -194,9 +194,12 @@ struct SplitOptions {
 /// tags and face-varying channels).
 /// The quasi 4-8 bisection reads the parent's positions to choose its
 /// edges, and places the split points at their edges' midpoints.
-/// Requires every face corner to have an edge (no degenerate faces), for
-/// the triangle, sqrt3 and bisection splits triangles only, and for the
-/// dual, midedge, sqrt3 and sqrt2 splits a manifold mesh.
+/// Faces repeating a vertex on consecutive corners (an edge joining the
+/// vertex to itself) are split by the quad and triangle splits only; the
+/// triangle, sqrt3 and bisection splits need triangles, and the dual,
+/// midedge, sqrt3 and sqrt2 splits a manifold mesh. On the control mesh
+/// (options.level 0) the quad and triangle splits tag the vertex points of
+/// MeshTopology::is_non_manifold_corner() vertices as corners.
 /// \param parent the parent level (tags, face-varying channels; positions
 ///   for the quasi 4-8 bisection).
 /// \param topology the topology of \p parent.
@@ -208,7 +211,8 @@ struct SplitOptions {
 ///   uses kDefaultTieTolerance).
 /// \return where the child's vertices come from.
 /// \pre \p topology was built from \p parent (unchecked).
-/// \throws TopologyError for a degenerate face, a face that is not a triangle
+/// \throws TopologyError for a degenerate face (other splits than the quad
+///   and triangle splits), a face that is not a triangle
 ///   (triangle, sqrt3 and bisection splits), a non-manifold vertex (dual and
 ///   midedge splits) or edge (sqrt3 and sqrt2 splits), or a triangle with two
 ///   boundary edges on a trisecting sqrt3 step.
