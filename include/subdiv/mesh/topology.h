@@ -62,9 +62,9 @@ class MeshTopology {
   /// \param mesh the mesh.
   /// \param corner_edge_key a key per face corner, for the side from that
   ///        corner to the next.
-  /// 	hrows InvalidInputError if the mesh's face arrays are malformed, or
+  /// \throws InvalidInputError if the mesh's face arrays are malformed, or
   ///         if the keys are not one per corner.
-  /// 	hrows std::bad_alloc if memory runs out.
+  /// \throws std::bad_alloc if memory runs out.
   MeshTopology(const PolygonMesh& mesh, std::span<const Index> corner_edge_key);
 
   /// The topology of `child`, the quad split of the mesh `parent` describes
