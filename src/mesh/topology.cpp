@@ -307,30 +307,31 @@ bool MeshTopology::is_flipped_edge(Index e) const noexcept {
   return corner_vertex_[sides[0]] == corner_vertex_[sides[1]];
 }
 
+namespace {
+
+// Whether edge e joins a vertex to itself or the same two vertices as
+// another edge: coincident edges are numbered next to each other.
+bool is_coincident(const MeshTopology& t, Index e) {
+  const auto ends = t.edge_vertices(e);
+  return ends[0] == ends[1] || (e > 0 && t.edge_vertices(e - 1) == ends) ||
+         (e + 1 < t.edge_count() && t.edge_vertices(e + 1) == ends);
+}
+
+}  // namespace
+
 bool MeshTopology::on_coincident_edge(Index v) const noexcept {
   if (!coincident_edges_) return false;
-  const auto edges = vertex_edges(v);
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const auto ends = edge_vertices_[edges[i]];
-    if (ends[0] == ends[1]) return true;
-    for (std::size_t j = 0; j < i; ++j)
-      if (edges[j] != edges[i] && edge_vertices_[edges[j]] == ends) return true;
-  }
+  for (const Index e : vertex_edges(v))
+    if (is_coincident(*this, e)) return true;
   return false;
 }
 
 bool MeshTopology::is_non_manifold_corner(Index v) const noexcept {
-  const bool input_defect = coincident_edges_ && !edges_keyed_ && on_coincident_edge(v);
+  const bool input_defect = !edges_keyed_ && on_coincident_edge(v);
   if (vertex_kind_[v] == VertexKind::isolated || (ring_ordered_[v] != 0 && !input_defect)) return false;
-  // Coincident edges are numbered next to each other.
-  auto coincident = [this](Index e) {
-    const auto ends = edge_vertices_[e];
-    return ends[0] == ends[1] || (e > 0 && edge_vertices_[e - 1] == ends) ||
-           (e + 1 < edge_count() && edge_vertices_[e + 1] == ends);
-  };
   int non_manifold = 0, boundary = 0;
   for (const Index e : vertex_edges(v)) {
-    non_manifold += edge_face_count(e) > 2 || is_flipped_edge(e) || (coincident_edges_ && coincident(e));
+    non_manifold += edge_face_count(e) > 2 || is_flipped_edge(e) || (coincident_edges_ && is_coincident(*this, e));
     boundary += edge_face_count(e) < 2;
   }
   return !(non_manifold == 2 && boundary == 0 && vertex_face_count(v) > valence(v));
