@@ -6,6 +6,7 @@
 
 #include "subdiv/refine/configuration.h"
 #include "subdiv/refine/creasing.h"
+#include "subdiv/refine/hierarchical_edits.h"
 #include "subdiv/refine/hierarchy.h"
 #include "subdiv/refine/refine.h"
 #include "subdiv/refine/ring_mesh.h"

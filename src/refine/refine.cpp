@@ -22,6 +22,7 @@
 #include "subdiv/mesh/validation.h"
 #include "face_varying.h"
 #include "grid_refine.h"
+#include "hierarchical_edits_detail.h"
 #include "overflow_check.h"
 #include "piecewise_smooth.h"
 #include "../core/row_accumulator.h"
@@ -293,21 +294,29 @@ std::optional<MeshTopology> child_topology(const MeshTopology& parent, const Pol
   return derived;
 }
 
+// `edits`, where given, are applied to each level as it is made (the
+// control mesh's to its copy).
 template <typename Step>
 PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology, const Scheme& scheme,
                           const RefineOptions& options, Step&& step,
                           const std::function<void(int, const Level&)>& on_child = nullptr,
-                          bool every_level = false, const Finish& finish = nullptr) {
+                          bool every_level = false, const Finish& finish = nullptr,
+                          detail::EditFollower* edits = nullptr) {
   // The level being refined: the input itself until a level is made (a
   // copy of it would be the input's size again at the peak), or its copy
-  // where corner angles are measured into its tags.
+  // where the control mesh is edited or corner angles are measured into its
+  // tags.
   PolygonMesh current;
   const PolygonMesh* parent = &mesh;
-  if (options.boundary_rules == BoundaryRules::piecewise_smooth && options.corner_angles == CornerAngles::measured) {
+  const bool edit_control = edits && edits->edits_level(0);
+  const bool measure = options.boundary_rules == BoundaryRules::piecewise_smooth &&
+                       options.corner_angles == CornerAngles::measured;
+  if (edit_control || measure) {
     current = mesh;
-    detail::measure_corner_angles(current, coarse_topology);
     parent = &current;
   }
+  if (edit_control) edits->apply(0, current);
+  if (measure) detail::measure_corner_angles(current, coarse_topology);
   std::optional<MeshTopology> topology = std::move(coarse_topology);
   const int last = options.start_level + options.levels;
   for (int l = options.start_level; l < last;) {
@@ -316,6 +325,10 @@ PolygonMesh refine_levels(const PolygonMesh& mesh, MeshTopology coarse_topology,
     const bool twice = !every_level && l + 2 <= last && takes_two_steps(scheme, *parent, *topology);
     const Scheme& level_scheme = twice ? *scheme.fast_path.two_steps : scheme;
     Level level = step(*parent, *topology, l, level_scheme);
+    if (edits) {  // on the quad split: one step per level
+      edits->descend(*topology, l);
+      edits->apply(l + 1, level.child);
+    }
     l += twice ? 2 : 1;
     if (l == last) topology.reset();
     else if (level.child_topology) topology = std::move(level.child_topology);
@@ -656,23 +669,37 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
   checked_topology(mesh, scheme, options, lines);
 }
 
+// The control mesh's hierarchical edits where the scheme applies them
+// (refining from the control mesh); null where there are none.
+static std::unique_ptr<detail::EditFollower> edit_follower(const PolygonMesh& mesh, const Scheme& scheme,
+                                                           const RefineOptions& options) {
+  if (options.start_level != 0 || !applies_hierarchical_edits(scheme)) return nullptr;
+  HierarchicalEdits edits = read_hierarchical_edits(mesh.tags, mesh);
+  if (edits.empty()) return nullptr;
+  return std::make_unique<detail::EditFollower>(std::move(edits));
+}
+
 PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOptions& options,
                    const SourceLines* lines) {
   MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
+  std::unique_ptr<detail::EditFollower> edits = edit_follower(mesh, scheme, options);
+  const int last = options.start_level + options.levels;
   PolygonMesh result;
   std::optional<PolygonMesh> by_grids;
   Finish as_grids;
   auto face_varying = face_varying_refiner(mesh, scheme, options);
   if (options.regular_grids && !face_varying && (regular_grid_of(scheme) || regular_triangle_grid_of(scheme)))
     as_grids = [&](const PolygonMesh& level, const MeshTopology& topology, int remaining) {
+      if (edits && last - remaining < edits->deepest_level()) return false;  // edits to come
       by_grids = detail::refine_as_grids(level, topology, scheme, options, remaining);
       return by_grids.has_value();
     };
   run_with_threads(options.threads, [&] {
     result = refine_levels(mesh, std::move(coarse), scheme, options,
-                           fast_step(boundary, method, options, std::move(face_varying)), nullptr, false, as_grids);
+                           fast_step(boundary, method, options, std::move(face_varying)), nullptr, false, as_grids,
+                           edits.get());
   });
   if (by_grids) result = std::move(*by_grids);
   run_with_threads(options.threads,
@@ -688,6 +715,7 @@ Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const 
   MeshTopology coarse = checked_topology(mesh, scheme, options, lines);
   const BoundaryInterpolation boundary = boundary_of(mesh, options);
   const CreaseMethod method = crease_method_of(mesh, options);
+  std::unique_ptr<detail::EditFollower> edits = edit_follower(mesh, scheme, options);
   if (keep == KeepLevels::all) h.levels.push_back({mesh, options.start_level, std::nullopt});
   std::optional<SplitMap> last_map;
   const auto on_child = [&](int l, const Level& level) {
@@ -698,7 +726,7 @@ Hierarchy refine_hierarchy(const PolygonMesh& mesh, const Scheme& scheme, const 
   run_with_threads(options.threads, [&] {
     finest = refine_levels(mesh, std::move(coarse), scheme, options,
                            fast_step(boundary, method, options, face_varying_refiner(mesh, scheme, options)), on_child,
-                           keep == KeepLevels::all);
+                           keep == KeepLevels::all, nullptr, edits.get());
   });
   run_with_threads(options.threads, [&] { detail::refuse_overflow(finest.positions, scheme, last); });
   if (keep == KeepLevels::last) h.levels.push_back({std::move(finest), last, std::move(last_map)});

@@ -61,14 +61,14 @@ void expect_same_mesh(const PolygonMesh& a, const PolygonMesh& b, const std::str
   EXPECT_EQ(a.tags.corners, b.tags.corners) << what;
 }
 
-// Tags no module interprets (hierarchical edits) name the input's elements
-// by index; every level below the input drops them, whatever the split, and
-// keeps the interpreted tags.
+// Tags kept verbatim (hierarchical edits, applied as the levels are made
+// where the scheme takes them) name the input's elements by index; every
+// level below the input drops them, whatever the split.
 TEST(Hierarchy, UninterpretedTagsStayOnTheInputLevel) {
   int checked = 0;
   for (const Scheme* scheme : all_schemes()) {
     PolygonMesh mesh = meshes_for(*scheme).back().second;  // the closed cube
-    mesh.tags.other.push_back({"vertexedit", {3, 1, 3, 1, 0, 2, 0, 0}, {0.5}, {"add", "P", "value"}});
+    mesh.tags.other.push_back({"vertexedit", {3, 1, 3, 1}, {0, 0, 0.5}, {"add", "P", "value"}});
     mesh.tags.other.push_back({"faceedit", {2, 0, 1, 1, 0}, {}, {"hole"}});
     try {
       check_refinable(mesh, *scheme, levels(1));

@@ -127,7 +127,7 @@ TEST_P(OpenSubdivAgreement, RefinesLikeOpenSubdiv) {
   PolygonMesh mesh = read_mesh(path).mesh;
   if (smooth_triangles) mesh.tags.triangle_subdivision = TriangleSubdivision::smooth;
   if (const std::string why = unsupported_feature(mesh); !why.empty())
-    GTEST_SKIP() << shape << ": not supported by subdiv yet: " << why;
+    GTEST_SKIP() << shape << ": " << why;
   if (test::levels_keep_coincident_edges(mesh, scheme.ours->split))
     GTEST_SKIP() << shape << ": its levels keep edges apart that join the same two vertices, which a level's faces "
                  << "alone lose, so opensubdiv_coincident_edges_test.cpp compares it, each level refined at once";

@@ -195,7 +195,7 @@ TEST_P(OpenSubdivFaceVarying, RefinesLikeOpenSubdiv) {
   const Scheme& scheme = c.shape.starts_with("loop_") ? loop_scheme() : catmull_clark_scheme();
   PolygonMesh mesh = read_mesh(path).mesh;
   if (const std::string why = test::unsupported_feature(mesh); !why.empty())
-    GTEST_SKIP() << c.shape << ": not supported by subdiv yet: " << why;
+    GTEST_SKIP() << c.shape << ": " << why;
   if (test::levels_keep_coincident_edges(mesh, scheme.split))
     GTEST_SKIP() << c.shape << ": its levels keep edges apart that join the same two vertices, which a level's faces "
                  << "alone lose, so opensubdiv_coincident_edges_test.cpp compares it, each level refined at once (its face-varying values are compared in the linear option only)";

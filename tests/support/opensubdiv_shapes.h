@@ -1,7 +1,7 @@
 #pragma once
 // What the OpenSubdiv-comparison tests share about OpenSubdiv's regression
 // shapes (../shared/data/meshes/opensubdiv): their scheme, the features
-// subdiv does not refine yet, and the regression harness's boundary mode.
+// Far cannot compare, and the regression harness's boundary mode.
 
 #include <filesystem>
 #include <string>
@@ -14,7 +14,9 @@ namespace subdiv::test {
 
 std::filesystem::path opensubdiv_shape_dir();
 
-/// Why subdiv cannot refine this shape as OpenSubdiv does yet, or "".
+/// Why OpenSubdiv's Far (libosd-dev), which has no hierarchical edits,
+/// cannot be compared with this shape, or "": its edit tags. Hbr's
+/// baselines check those (hbr_baseline_test.cpp).
 std::string unsupported_feature(const PolygonMesh& mesh);
 
 /// Why refine() rejects the shape, or "" when it refines it.

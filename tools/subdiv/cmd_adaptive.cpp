@@ -113,7 +113,7 @@ int run_adaptive(const AdaptiveCommandOptions& opt) {
   clock.lap("bound");
   const AdaptiveResult result = adaptive_refine(file.mesh, scheme, opt.eps, options);
   clock.lap("adaptive");
-  warn_dropped_tags(opt.input, file.mesh.tags);
+  warn_dropped_tags(opt.input, file.mesh);
   warn_not_carried(opt.input, file.mesh, result.mesh);
   if (result.approximated > 0)
     warnf("subdiv: warning: %s no configuration's masks after four isolation levels: %s only approximated, and "

@@ -80,7 +80,7 @@ int run_limit(const LimitCommandOptions& opt) {
   // The mesh whose vertices are written: the input, or its refinement.
   PolygonMesh out = std::move(file.mesh);
   if (opt.levels > 0) {
-    warn_dropped_tags(opt.input, out.tags);
+    warn_dropped_tags(opt.input, out, scheme, opt.levels);
     drop_input_normals(opt.input, out);
     out = refine(out, *scheme, refine_options);
     clock.lap("refine");

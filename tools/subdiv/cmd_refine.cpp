@@ -180,7 +180,7 @@ int run_refine(const RefineCommandOptions& opt) {
   options.levels = opt.full_steps ? 2 * opt.levels : opt.levels;
   options.start_level = opt.start_level;
   if (options.levels > 0) {
-    warn_dropped_tags(opt.input, file.mesh.tags);
+    warn_dropped_tags(opt.input, file.mesh, options.start_level == 0 ? &scheme : nullptr, options.levels);
     drop_input_normals(opt.input, file.mesh);
   }
   clock.lap("read");

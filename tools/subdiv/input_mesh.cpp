@@ -5,8 +5,12 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "output_checks.h"
+#include "subdiv/core/error.h"
 #include "subdiv/mesh/triangulate.h"
+#include "subdiv/refine/hierarchical_edits.h"
 
 namespace subdiv::cli {
 
@@ -17,20 +21,36 @@ void triangulate_if_asked(const Scheme& scheme, bool triangulate, MeshFile& file
   file.lines.hole_lines.clear();
 }
 
-void warn_dropped_tags(const std::string& path, const Tags& tags) {
-  if (tags.other.empty()) return;
+void warn_dropped_tags(const std::string& path, const PolygonMesh& mesh, const Scheme* scheme, int levels) {
+  const bool edits_apply = scheme && applies_hierarchical_edits(*scheme);
   std::vector<std::pair<std::string, int>> kinds;  // in the file's order
-  for (const RawTag& t : tags.other) {
+  std::size_t dropped = 0, too_deep = 0;
+  for (const RawTag& t : mesh.tags.other) {
+    if (edits_apply && is_hierarchical_edit(t)) {
+      Tags one;
+      one.other.push_back(t);
+      int deepest = 0;
+      try {
+        deepest = read_hierarchical_edits(one, mesh).deepest_level();
+      } catch (const InvalidInputError& e) {
+        throw InvalidInputError(path + ": " + e.what());
+      }
+      if (deepest <= levels) continue;
+      ++too_deep;
+    }
+    ++dropped;
     auto it = std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return k.first == t.name; });
     if (it == kinds.end()) kinds.emplace_back(t.name, 1);
     else ++it->second;
   }
+  if (dropped == 0) return;
   std::string list;
   for (const auto& [name, count] : kinds) list += (list.empty() ? "" : ", ") + std::to_string(count) + " " + name;
-  warnf(
-               "subdiv: warning: %s: %zu tags not interpreted dropped from the refined mesh (%s): their indices name "
-               "the input's faces and vertices\n",
-               path.c_str(), tags.other.size(), list.c_str());
+  const std::string why = too_deep == dropped
+                              ? fmt::format("their edits lie below the {} levels made", levels)
+                              : "their indices name the input's faces and vertices";
+  warnf("subdiv: warning: %s: %zu tags not applied dropped from the refined mesh (%s): %s\n", path.c_str(), dropped,
+        list.c_str(), why.c_str());
 }
 
 void drop_input_normals(const std::string& path, PolygonMesh& mesh) {

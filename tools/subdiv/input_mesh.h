@@ -13,11 +13,15 @@ namespace subdiv::cli {
 /// about them then name the element without a line.
 void triangulate_if_asked(const Scheme& scheme, bool triangulate, MeshFile& file);
 
-/// One warning line when the mesh has tags no module interprets (OBJ `t`
-/// lines such as hierarchical edits): refined meshes drop them, since
-/// their indices name the input's faces and vertices. Says how many of each
-/// kind, e.g. "2 vertexedit, 1 edgeedit".
-void warn_dropped_tags(const std::string& path, const Tags& tags);
+/// One warning line when the mesh has tags that refining it `levels` levels
+/// does not apply (OBJ `t` lines kept verbatim): refined meshes drop them,
+/// since their indices name the input's faces and vertices. Hierarchical
+/// edits are applied where `scheme` is given and takes them
+/// (applies_hierarchical_edits()) and they lie within the levels made.
+/// Says how many of each kind, e.g. "2 vertexedit, 1 edgeedit".
+/// \throws InvalidInputError naming `path` where an edit tag is malformed.
+void warn_dropped_tags(const std::string& path, const PolygonMesh& mesh, const Scheme* scheme = nullptr,
+                       int levels = 0);
 
 /// Input normals (OBJ `vn`, PLY nx ny nz) would be interpolated as data by
 /// refinement, not follow the refined surface: removes them from `mesh`,

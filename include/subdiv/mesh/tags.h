@@ -96,8 +96,9 @@ enum class TriangleSubdivision {
   smooth,   ///< the modified, smoother weights for triangles (TRI_SUB_SMOOTH)
 };
 
-/// A tag line kept verbatim because no module interprets it yet
-/// (hierarchical edits, future extensions). Written back unchanged with the
+/// A tag line kept verbatim: hierarchical edits (read by
+/// read_hierarchical_edits() and applied by refinement where the scheme
+/// takes them) and tags no module interprets. Written back unchanged with the
 /// same mesh (`subdiv convert`); refinement drops them from the refined
 /// levels, whose faces and vertices their indices do not name.
 struct RawTag {

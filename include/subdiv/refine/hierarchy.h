@@ -72,6 +72,9 @@ struct Hierarchy {
 /// `scheme`. With KeepLevels::all every level is made (4-8's two steps at
 /// once are not taken, since they skip a level); with KeepLevels::last this
 /// is refine() with the level number kept (without the grid path).
+/// Hierarchical edits are applied to each level as refine() applies them;
+/// the levels drop the edit tags, so refine_further() does not apply edits
+/// below the hierarchy's finest level.
 /// \param mesh the mesh to refine, at level options.start_level.
 /// \param scheme the scheme.
 /// \param options the rule choices and run controls (options.on_level is

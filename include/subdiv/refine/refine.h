@@ -167,7 +167,10 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 /// channel through the scheme's masks, face-varying channels as
 /// face_varying_interpolation_of() says for the schemes with
 /// SchemeTraits::smooth_face_varying (linearly within faces otherwise), tags
-/// propagated. Validates the input first (check_refinable), with
+/// propagated. The mesh's hierarchical edits (hierarchical_edits.h) are
+/// applied to each level as it is made where applies_hierarchical_edits()
+/// says so and options.start_level is 0; refined levels drop the edit tags.
+/// Validates the input first (check_refinable), with
 /// `lines` naming the file and lines in its errors. Exceptions thrown by
 /// options.on_level propagate.
 /// \param mesh the mesh to refine, at level options.start_level.
@@ -176,7 +179,8 @@ void check_refinable(const PolygonMesh& mesh, const Scheme& scheme, const Refine
 /// \param lines where given, the source lines that errors name.
 /// \return the refined mesh.
 /// \throws InvalidInputError, ParameterError or ValidationError as
-///   check_refinable() does; InvalidInputError also, under the
+///   check_refinable() does; InvalidInputError also for a malformed
+///   hierarchical edit (read_hierarchical_edits()), under the
 ///   piecewise-smooth rules, for options.flatness outside [0, 1] or a concave
 ///   corner whose configuration lacks the flatness modification's spectrum,
 ///   once such a corner is met (check_refinable() does not look at them);
@@ -193,7 +197,8 @@ PolygonMesh refine(const PolygonMesh& mesh, const Scheme& scheme, const RefineOp
 /// (level i-1 -> level i; one for both of two steps taken at once, see
 /// RefineOptions::on_level). `final_level`, if given, receives the last level's mesh with
 /// positions evaluated through the tables. The grid path
-/// (RefineOptions::regular_grids) is not taken.
+/// (RefineOptions::regular_grids) is not taken. Tables are linear in the
+/// control points: hierarchical edits are not applied.
 /// \param mesh the mesh to refine, at level options.start_level.
 /// \param scheme the scheme.
 /// \param options the rule choices and run controls.
