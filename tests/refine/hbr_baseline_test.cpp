@@ -264,9 +264,8 @@ std::vector<std::string> baseline_shapes() {
 // regression harness writes its finest level without that
 // (regression/hbr_regression/main.cpp, writeObj): a baseline of level k
 // shows the edits of the levels above k only. The mesh without the edit
-// tags of level k refines to what it shows; tests/refine/
-// hierarchical_edits_test.cpp checks that the edits of the last level are
-// applied.
+// tags of level k refines to what it shows; hbr_edits_test.cpp compares
+// with Hbr asked for those edits too.
 PolygonMesh without_edits_on_level(PolygonMesh mesh, int k) {
   std::erase_if(mesh.tags.other, [&](const RawTag& t) {
     if (!is_hierarchical_edit(t)) return false;
