@@ -154,13 +154,19 @@ HierarchicalEdits read_hierarchical_edits(const Tags& tags, const PolygonMesh& m
   return edits;
 }
 
+int hierarchical_edit_level(const RawTag& tag, std::size_t rank, const PolygonMesh& mesh) {
+  HierarchicalEdits edits;
+  EditTagReader(tag, rank, mesh).read_into(edits);
+  return edits.deepest_level();
+}
+
 bool applies_hierarchical_edits(const Scheme& scheme) noexcept {
   return scheme.split == SplitRule::quad && !scheme.steps;
 }
 
 namespace detail {
 
-EditFollower::EditFollower(HierarchicalEdits edits) : edits_(std::move(edits)), deepest_(edits_.deepest_level()) {
+EditFollower::EditFollower(HierarchicalEdits edits) : edits_(std::move(edits)) {
   for (const auto& e : edits_.values) located_.push_back({&e.path, e.path.face, 0});
   for (const auto& e : edits_.sharpnesses) located_.push_back({&e.path, e.path.face, 0});
   for (const auto& p : edits_.holes) located_.push_back({&p, p.face, 0});

@@ -17,7 +17,7 @@ class EditFollower {
   EditFollower& operator=(const EditFollower&) = delete;
 
   /// The deepest level an edit applies on (-1: none).
-  int deepest_level() const noexcept { return deepest_; }
+  int deepest_level() const noexcept { return edits_.deepest_level(); }
   /// Whether an edit applies on `level`.
   bool edits_level(int level) const noexcept;
   /// Follows the paths from `parent_level` (its topology) one level down.
@@ -33,7 +33,6 @@ class EditFollower {
     int rotation;  // Hbr's corner i is this face's corner i - rotation
   };
   HierarchicalEdits edits_;
-  int deepest_;
   std::vector<Located> located_;  // values, then sharpnesses, then holes
 };
 

@@ -772,9 +772,10 @@ run edits-refine-2 0 refine "$edits" -s catmull-clark -l 2 -o "$work/e2.obj" && 
   fail "edits-refine-2: warned: $(cat "$work/err")"
 [ "$(grep -c '^t hole' "$work/e2.obj")" -ge 1 ] && pass || fail "edits-refine-2: no hole written"
 run edits-loop 0 refine "$edits" -s loop --triangulate -l 1 -o "$work/e.obj" && stderr_has edits-loop "3 tags not applied"
-printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nt vertexedit 3/3/3 2 0 7 0 0 1 add P value\n' > "$work/bad_edit.obj"
+# The second tag is malformed: the error names it by its rank in the file.
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nt vertexedit 3/3/3 2 0 1 0 0 1 add P value\nt vertexedit 3/3/3 2 0 7 0 0 1 add P value\n' > "$work/bad_edit.obj"
 run edits-bad 1 refine "$work/bad_edit.obj" -s catmull-clark -o "$work/e.obj" && stderr_one_line edits-bad &&
-  stderr_has edits-bad "bad_edit.obj: vertexedit tag 1: corner 7 on face 0's path is not in 0..3"
+  stderr_has edits-bad "bad_edit.obj: vertexedit tag 2: corner 7 on face 0's path is not in 0..3"
 run edits-limit-0 0 limit "$edits" -s catmull-clark -o "$work/e.obj" && [ ! -s "$work/err" ] && pass || fail "edits-limit-0: warned"
 
 # ---- Issue 22 (wrong answers): interior valence-2 vertices in limit, depth

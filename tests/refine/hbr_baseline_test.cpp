@@ -267,12 +267,10 @@ std::vector<std::string> baseline_shapes() {
 // tags of level k refines to what it shows; hbr_edits_test.cpp compares
 // with Hbr asked for those edits too.
 PolygonMesh without_edits_on_level(PolygonMesh mesh, int k) {
+  std::size_t rank = 0;
   std::erase_if(mesh.tags.other, [&](const RawTag& t) {
-    if (!is_hierarchical_edit(t)) return false;
-    Tags one;
-    one.other.push_back(t);
-    const HierarchicalEdits edits = read_hierarchical_edits(one, mesh);
-    return edits.deepest_level() == k;
+    ++rank;
+    return is_hierarchical_edit(t) && hierarchical_edit_level(t, rank, mesh) == k;
   });
   return mesh;
 }

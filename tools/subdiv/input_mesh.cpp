@@ -25,17 +25,16 @@ void warn_dropped_tags(const std::string& path, const PolygonMesh& mesh, const S
   const bool edits_apply = scheme && applies_hierarchical_edits(*scheme);
   std::vector<std::pair<std::string, int>> kinds;  // in the file's order
   std::size_t dropped = 0, too_deep = 0;
-  for (const RawTag& t : mesh.tags.other) {
+  for (std::size_t i = 0; i < mesh.tags.other.size(); ++i) {
+    const RawTag& t = mesh.tags.other[i];
     if (edits_apply && is_hierarchical_edit(t)) {
-      Tags one;
-      one.other.push_back(t);
-      int deepest = 0;
+      int level = 0;
       try {
-        deepest = read_hierarchical_edits(one, mesh).deepest_level();
+        level = hierarchical_edit_level(t, i + 1, mesh);
       } catch (const InvalidInputError& e) {
         throw InvalidInputError(path + ": " + e.what());
       }
-      if (deepest <= levels) continue;
+      if (level <= levels) continue;
       ++too_deep;
     }
     ++dropped;

@@ -11,6 +11,7 @@
 /// parametric orientation, so child i's corner i is the parent's vertex;
 /// another polygon's child starts at it.
 
+#include <cstddef>
 #include <vector>
 
 #include "subdiv/core/types.h"
@@ -97,6 +98,16 @@ bool is_hierarchical_edit(const RawTag& tag) noexcept;
 ///   set, add or subtract, a variable other than P, an edit other than value
 ///   (vertexedit), sharpness or hole, or a path that leaves the mesh.
 HierarchicalEdits read_hierarchical_edits(const Tags& tags, const PolygonMesh& mesh);
+
+/// The level one edit tag applies on: the deepest of its paths' levels.
+/// \param tag an edit tag (is_hierarchical_edit()).
+/// \param rank its rank among the mesh's `tags.other`, from 1, which errors
+///   name.
+/// \param mesh the control mesh the paths start from.
+/// \return the number of children on its longest path.
+/// \throws InvalidInputError where the tag is malformed, as
+///   read_hierarchical_edits() says.
+int hierarchical_edit_level(const RawTag& tag, std::size_t rank, const PolygonMesh& mesh);
 
 /// Whether refine() and refine_hierarchy() apply a mesh's hierarchical edits
 /// with `scheme`: schemes of a single step on the quad split (Catmull-Clark,
