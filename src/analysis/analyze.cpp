@@ -178,7 +178,10 @@ ConfigurationAnalysis analyze_point(const Scheme& scheme, const Configuration& c
 
 ConfigurationAnalysis analyze(const Scheme& scheme, const Configuration& configuration, const AnalysisOptions& options) {
   ConfigurationAnalysis a = analyze_point(scheme, configuration, options);
-  a.regular = regular_smoothness_of(scheme, options.rules, configuration.kind != Configuration::Kind::interior);
+  if (options.regular_rules)
+    a.regular = regular_smoothness_of(scheme, options.rules, configuration.kind != Configuration::Kind::interior);
+  else
+    a.regular.reason = "the regular rules were not tested (AnalysisOptions::regular_rules is false)";
   a.configuration_reason = a.reason;
   // Reif's criterion presumes the surface C1 away from the centre: the
   // regular rules' own verdict decides that part.

@@ -137,6 +137,7 @@ class DualMaskCache {
     if (auto it = cache_.find(k); it != cache_.end()) return it->second;
     AnalysisOptions options;
     options.characteristic_map = false;
+    options.regular_rules = false;  // the masks alone
     options.rules = rules_;
     const Configuration c{Configuration::Kind::interior, k, CornerType::convex};
     const ConfigurationAnalysis a = analyze(scheme_, c, options);

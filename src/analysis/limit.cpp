@@ -171,6 +171,7 @@ class MaskCache {
     if (it != cache_.end()) return it->second;
     AnalysisOptions options;
     options.characteristic_map = false;
+    options.regular_rules = false;  // the masks alone
     options.rules = rules_;
     const ConfigurationAnalysis a = analyze(scheme_, canonical, options);
     Masks masks{a.limit_mask, a.tangent_masks, a.tangent_masks.has_value(), std::nullopt};

@@ -61,6 +61,7 @@ double configuration_rate(const Scheme& scheme, const Configuration& c, const Re
   AnalysisOptions options;
   options.characteristic_map = false;
   options.masks = false;  // the rate reads the spectrum alone
+  options.regular_rules = false;  // the spectrum alone
   options.rules = rules;  // the rules bounded (piecewise-smooth ones change the matrices)
   options.rules.start_level = 0;
   const ConfigurationAnalysis a = analyze(scheme, c, options);

@@ -200,6 +200,7 @@ DualFaceOperator dual_face_operator(const Scheme& scheme, int k, const RefineOpt
                             " is not invariant: " + m.invariance_note);
   AnalysisOptions analysis;
   analysis.characteristic_map = false;
+  analysis.regular_rules = false;  // the spectrum alone
   analysis.rules = rules;
   const ConfigurationAnalysis spectrum = analyze(scheme, face, analysis);
   if (spectrum.leading.size() < 2 || !(std::abs(spectrum.leading[1]) > 0.0))

@@ -142,6 +142,27 @@ TEST(Analyze, WarrensWrongValenceThreeWeightIsCaught) {
   EXPECT_EQ(analyze(loop_warren_scheme(), interior(3)).verdict, SmoothnessVerdict::c1);
 }
 
+TEST(Analyze, WithoutTheRegularRulesTheMasksStayAndC1IsNotClaimed) {
+  // Limits and depth bounds read the spectrum and the masks alone: leaving
+  // the regular rules' test out must change neither, and must not leave a
+  // C1 verdict that rests on half the criterion.
+  AnalysisOptions full;
+  AnalysisOptions spectral;
+  spectral.regular_rules = false;
+  for (const Scheme* scheme : {&loop_scheme(), &catmull_clark_scheme()}) {
+    const ConfigurationAnalysis a = analyze(*scheme, interior(5), full);
+    const ConfigurationAnalysis b = analyze(*scheme, interior(5), spectral);
+    ASSERT_EQ(a.verdict, SmoothnessVerdict::c1) << scheme->name;
+    EXPECT_EQ(b.verdict, SmoothnessVerdict::inconclusive) << scheme->name;
+    EXPECT_NE(b.reason.find("regular rules were not tested"), std::string::npos) << b.reason;
+    EXPECT_EQ(b.regular.verdict, SmoothnessVerdict::inconclusive);
+    ASSERT_EQ(a.leading.size(), b.leading.size());
+    for (std::size_t i = 0; i < a.leading.size(); ++i) EXPECT_EQ(a.leading[i], b.leading[i]) << i;
+    ASSERT_TRUE(a.limit_mask && b.limit_mask);
+    EXPECT_EQ(*a.limit_mask, *b.limit_mask);
+  }
+}
+
 }  // namespace
 }  // namespace subdiv
 

@@ -89,6 +89,11 @@ struct AnalysisOptions {
   /// false: no limit or tangent masks either (the depth bound's rates need
   /// the spectrum alone).
   bool masks = true;
+  /// false: the regular rules' verdict (`regular`) is not computed, and a C1
+  /// verdict at the configuration is reported inconclusive. For callers that
+  /// read the spectrum or the masks alone: the regular rules' test can take
+  /// seconds the first time a rule is met.
+  bool regular_rules = true;
   /// Interior configurations whose mask matrix (`matrix`) has at least this
   /// many rows find the tangent masks' subdominant pair through
   /// spectrum_by_rotation, as the spectrum of `wide_matrix` always is: the
