@@ -11,9 +11,9 @@
 #
 # Seeds are fuzz/seeds (PLY and OFF in every encoding the readers take), the
 # small bundled meshes, tests/data and, where present, the shared meshes (../shared/data/meshes); each target's growing corpus lives in
-# build-fuzz/corpus/<target>, so a long campaign can be resumed. A finding
+# build-asan/corpus/<target>, so a long campaign can be resumed. A finding
 # (crash, sanitizer report, broken invariant, timeout, out of memory) stops
-# the run with a non-zero exit and leaves the input in build-fuzz/findings/:
+# the run with a non-zero exit and leaves the input in build-asan/findings/:
 # minimize it (fuzz_<target> -minimize_crash=1 INPUT), keep it under
 # tests/data/fuzz/<target>/ and the test suite checks it on every build.
 set -euo pipefail
@@ -35,16 +35,10 @@ done
 
 bash scripts/setup.sh --fuzz
 
-build_dir=build-fuzz
-args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" -DSUBDIV_BUILD_FUZZERS=ON
-      -DSUBDIV_BUILD_TOOLS=OFF -DSUBDIV_BUILD_TESTS=OFF -DSUBDIV_BUILD_EXAMPLES=OFF -DSUBDIV_BUILD_BENCHMARKS=OFF)
-if [ "${CI:-}" = "true" ]; then args+=(-DSUBDIV_WARNINGS_AS_ERRORS=ON); fi
-generator=()
-if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
-if [ ! -f "$build_dir/CMakeCache.txt" ]; then
-  CXX=clang++-14 cmake -S . -B "$build_dir" "${generator[@]}" "${args[@]}"
-fi
-cmake --build "$build_dir" --parallel "$(nproc)"
+# The fuzz targets live in the sanitizer build (scripts/build.sh --sanitize
+# builds them with the suite; here only they are built).
+build_dir=build-asan
+bash scripts/build.sh --fuzz
 
 # Seeds: small files of each format (under 64 KiB keeps the runs fast).
 seed_files() {  # extension
@@ -83,8 +77,8 @@ fi
 findings="$build_dir/findings"
 mkdir -p "$findings"
 cat fuzz/dict/{obj,ply,off}.dict > "$seeds/pipeline.dict"
-# One target's run: its summary in build-fuzz/fuzz_<target>.summary, and
-# "found" in build-fuzz/fuzz_<target>.status where it found something.
+# One target's run: its summary in build-asan/fuzz_<target>.summary, and
+# "found" in build-asan/fuzz_<target>.status where it found something.
 run_target() {
   local target=$1 corpus="$build_dir/corpus/$1" log="$build_dir/fuzz_$1.log" dict
   mkdir -p "$corpus" "$findings/$target"

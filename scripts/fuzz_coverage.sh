@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Line coverage of the fuzz corpora (build-fuzz/corpus/<target>, grown by
+# Line coverage of the fuzz corpora (build-asan/corpus/<target>, grown by
 # scripts/fuzz.sh): rebuilds the targets with clang's source-based coverage in
 # build-fuzz-cov/, runs every corpus input once through its target and prints
 # llvm-cov's summary for the source files that target is about.
@@ -21,7 +21,7 @@ fi
 cmake --build "$build_dir" --parallel "$(nproc)"
 
 for target in $targets; do
-  corpus=build-fuzz/corpus/$target
+  corpus=build-asan/corpus/$target
   if [ ! -d "$corpus" ]; then echo "fuzz_coverage.sh: no corpus for $target (run scripts/fuzz.sh first)"; continue; fi
   case "$target" in
     obj) sources=(src/io/obj_reader.cpp src/io/obj_writer.cpp src/io/text_scan.h) ;;

@@ -5,7 +5,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash scripts/setup.sh --browser
+setup=(--browser)
+if [ "${1:-}" = "--sanitize" ]; then setup+=(--fuzz); fi  # clang and its sanitizer runtimes
+bash scripts/setup.sh "${setup[@]}"
 # The browser test's driver (playwright-core) and the three.js the page
 # inlines, as viewer/package-lock.json pins them.
 if [ ! -f viewer/node_modules/.package-lock.json ] || [ viewer/package-lock.json -nt viewer/node_modules/.package-lock.json ]; then

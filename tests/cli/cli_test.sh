@@ -18,8 +18,9 @@ fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
 pass() { passed=$((passed + 1)); }
 
 # SUBDIV_CLI_QUICK=1 (the sanitizer build) leaves out the few commands
-# whose numerics take seconds in a release build and minutes under the
-# sanitizers; the release build runs them.
+# whose numerics take 10 s or more under the sanitizers (analyses over many
+# valences, adaptive refinement of interpolating schemes); the release build
+# runs them.
 full=1
 if [ "${SUBDIV_CLI_QUICK:-0}" = 1 ]; then full=0; fi
 
@@ -323,7 +324,9 @@ stdout_has analyze-gcc "|U_dd| = 0.25 from the stencils"
 run analyze-gcc-52 0 analyze -s gcc --valence-weights 5:0.9:0.05 -k 5 &&
   stdout_has analyze-gcc-52 "open: (5.2) fails" && stdout_has analyze-gcc-52 "not tangent-plane continuous"
 run analyze-gcc-json 0 analyze -s gcc --alpha 0.3 --beta 0.4 -k 5 --json && stdout_has analyze-gcc-json '"chen_prautzsch"'
-run analyze-midpoint-6 0 analyze -s midpoint --degree 6 -k 3..5 && stdout_has analyze-midpoint-6 "extraordinary face of k sides"
+if [ "$full" = 1 ]; then  # 22 s under the sanitizers
+  run analyze-midpoint-6 0 analyze -s midpoint --degree 6 -k 3..5 && stdout_has analyze-midpoint-6 "extraordinary face of k sides"
+fi
 run analyze-gcc-boundary 1 analyze -s gcc --boundary -k 2 && stderr_one_line analyze-gcc-boundary &&
   stderr_has analyze-gcc-boundary "interior configurations only"
 run limit-gcc 0 limit "$meshes/cube.obj" -s gcc --degree 5 -o "$work/gcc_limit.obj" &&
@@ -338,21 +341,25 @@ run refine-sqrt3-open 0 refine "$meshes/l_shape.obj" -s sqrt3 --triangulate -l 2
 run refine-sqrt3-open-info 0 info "$work/s3l.obj" && stdout_has refine-sqrt3-open-info "validation      ok"
 run refine-sqrt3-quads 1 refine "$meshes/cube.obj" -s sqrt3 -o "$work/x.obj" && stderr_one_line refine-sqrt3-quads &&
   stderr_has refine-sqrt3-quads "needs a triangle mesh"
-run analyze-sqrt3 0 analyze -s sqrt3 -k 3..12 && stdout_has analyze-sqrt3 "period 2"
-grep -qE "^interior k=6 +7 +1 +0.333333 +0.333333 +0.111111 .* C1 " "$work/out" && pass || fail "analyze sqrt3: k=6 row"
-[ "$(grep -cE "^interior k=[0-9]+ .* C1 " "$work/out")" = 10 ] && pass || fail "analyze sqrt3: not C1 at every valence"
+if [ "$full" = 1 ]; then  # 12 s under the sanitizers
+  run analyze-sqrt3 0 analyze -s sqrt3 -k 3..12 && stdout_has analyze-sqrt3 "period 2"
+  grep -qE "^interior k=6 +7 +1 +0.333333 +0.333333 +0.111111 .* C1 " "$work/out" && pass || fail "analyze sqrt3: k=6 row"
+  [ "$(grep -cE "^interior k=[0-9]+ .* C1 " "$work/out")" = 10 ] && pass || fail "analyze sqrt3: not C1 at every valence"
+fi
 run analyze-sqrt3-boundary 0 analyze -s sqrt3 --boundary -k 3 && stdout_has analyze-sqrt3-boundary "0.333333  0.333333"
 run refine-isqrt3 0 refine "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 -l 2 -o "$work/is3.obj" --stats
 stdout_has refine-isqrt3 "level 2: 20 vertices, 36 faces"
 run refine-isqrt3-open 0 refine "$meshes/l_shape.obj" -s interpolatory-sqrt3 --triangulate -l 3 -o "$work/is3l.obj"
 run refine-isqrt3-open-info 0 info "$work/is3l.obj" && stdout_has refine-isqrt3-open-info "validation      ok"
-run analyze-isqrt3-boundary 0 analyze -s interpolatory-sqrt3 --boundary -k 1..5
-# Reif holds at every sector; the regular boundary test does not apply to these rules.
-[ "$(grep -cE "^boundary k=[0-9]+ .* yes +yes +yes +inconclusive " "$work/out")" = 5 ] && pass ||
-  fail "analyze interpolatory-sqrt3: boundary rows"
-stdout_has analyze-isqrt3-boundary "boundary regular rules not read"
-run analyze-isqrt3 0 analyze -s interpolatory-sqrt3 -k 3..8 --no-charmap &&
-  grep -qE "^interior k=6 +37 +3 +0.333333 +0.333333 " "$work/out" && pass || fail "analyze interpolatory-sqrt3: k=6 row"
+if [ "$full" = 1 ]; then  # 55 s under the sanitizers
+  run analyze-isqrt3-boundary 0 analyze -s interpolatory-sqrt3 --boundary -k 1..5
+  # Reif holds at every sector; the regular boundary test does not apply to these rules.
+  [ "$(grep -cE "^boundary k=[0-9]+ .* yes +yes +yes +inconclusive " "$work/out")" = 5 ] && pass ||
+    fail "analyze interpolatory-sqrt3: boundary rows"
+  stdout_has analyze-isqrt3-boundary "boundary regular rules not read"
+  run analyze-isqrt3 0 analyze -s interpolatory-sqrt3 -k 3..8 --no-charmap &&
+    grep -qE "^interior k=6 +37 +3 +0.333333 +0.333333 " "$work/out" && pass || fail "analyze interpolatory-sqrt3: k=6 row"
+fi
 # Two steps at once (a quad split), then one: levels 2 and 3 are reported.
 run refine-four-eight 0 refine "$meshes/cube.obj" -s four-eight -l 3 -o "$work/48.obj" --stats
 stdout_has refine-four-eight "level 2: 26 vertices, 24 faces" && stdout_has refine-four-eight "level 3: 50 vertices, 48 faces"
@@ -360,8 +367,10 @@ if grep -q "^level 1:" "$work/out"; then fail "refine four-eight: level 1 report
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' > "$work/quad.obj"
 run refine-four-eight-open 1 refine "$work/quad.obj" -s four-eight -o "$work/x.obj" &&
   stderr_one_line refine-four-eight-open && stderr_has refine-four-eight-open "needs a closed mesh"
-run analyze-four-eight 0 analyze -s four-eight -k 3..8 && stdout_has analyze-four-eight "period 2"
-grep -qE "^interior k=4 +25 +2 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze four-eight: k=4 row"
+if [ "$full" = 1 ]; then  # 19 s under the sanitizers
+  run analyze-four-eight 0 analyze -s four-eight -k 3..8 && stdout_has analyze-four-eight "period 2"
+  grep -qE "^interior k=4 +25 +2 +0.500000 +0.500000 +0.250000 .* C1 " "$work/out" && pass || fail "analyze four-eight: k=4 row"
+fi
 run refine-kobbelt 0 refine "$meshes/cube.obj" -s kobbelt -l 2 -o "$work/kob.obj" --stats
 stdout_has refine-kobbelt "level 1: 26 vertices, 24 faces" && stdout_has refine-kobbelt "level 2: 98 vertices, 96 faces"
 run refine-kobbelt-open 0 refine "$work/quad.obj" -s kobbelt -l 2 -o "$work/kobq.obj"
@@ -370,9 +379,11 @@ run refine-kobbelt-triangles 1 refine "$meshes/tetrahedron.obj" -s kobbelt -o "$
 run refine-kobbelt-tension 1 refine "$meshes/cube.obj" -s kobbelt --tension -0.5 -o "$work/x.obj" &&
   stderr_one_line refine-kobbelt-tension && stderr_has refine-kobbelt-tension "kobbelt needs w > -1/2"
 # Interpolating schemes: faces refined by their next level's displacements.
-run adaptive-kobbelt 0 adaptive "$meshes/cube.obj" -s kobbelt --eps 0.01 -o "$work/ak.obj" &&
-  stdout_has adaptive-kobbelt "every vertex on the limit; largest distance of a face's next-level vertices" &&
-  stdout_has adaptive-kobbelt "within eps (1 - r)"
+if [ "$full" = 1 ]; then  # 12 s under the sanitizers
+  run adaptive-kobbelt 0 adaptive "$meshes/cube.obj" -s kobbelt --eps 0.01 -o "$work/ak.obj" &&
+    stdout_has adaptive-kobbelt "every vertex on the limit; largest distance of a face's next-level vertices" &&
+    stdout_has adaptive-kobbelt "within eps (1 - r)"
+fi
 run adaptive-butterfly 0 adaptive "$meshes/tetrahedron.obj" -s butterfly --eps 0.01 -o "$work/ab.obj" --json &&
   stdout_has adaptive-butterfly '"measure": "surface-to-limit"'
 if [ "$full" = 1 ]; then
@@ -394,9 +405,11 @@ done
 run analyze-four-point-default 0 analyze -s four-point && stdout_has analyze-four-point-default "verdict: C1 (regular rules C1"
 run analyze-four-point-json 0 analyze -s four-point --tension 0.3 --json &&
   stdout_has analyze-four-point-json '"verdict": "not C1"' && stdout_has analyze-four-point-json '"lower_length"'
-run analyze-kobbelt-tension 0 analyze -s kobbelt --tension 0.3 -k 4
-grep -qE "^interior k=4 .* yes +yes +yes +not C1 " "$work/out" && pass || fail "analyze kobbelt 0.3: k=4 row"
-stdout_has analyze-kobbelt-tension "regular rules not C1"
+if [ "$full" = 1 ]; then  # 13 s under the sanitizers
+  run analyze-kobbelt-tension 0 analyze -s kobbelt --tension 0.3 -k 4
+  grep -qE "^interior k=4 .* yes +yes +yes +not C1 " "$work/out" && pass || fail "analyze kobbelt 0.3: k=4 row"
+  stdout_has analyze-kobbelt-tension "regular rules not C1"
+fi
 run analyze-loop-regular 0 analyze -s loop -k 6 && stdout_has analyze-loop-regular "regular rules C1"
 run analyze-bilinear 0 analyze -s bilinear -k 4 && grep -qE "^interior k=4 .* not C1 " "$work/out" && pass ||
   fail "analyze bilinear: k=4 not C1"

@@ -50,7 +50,7 @@ std::unique_ptr<Far::TopologyRefiner> base_refiner(const PolygonMesh& mesh, Sdc:
 // Bfr's surface of every face of a mesh whose faces are its ptex faces.
 class BfrSurfaces {
  public:
-  BfrSurfaces(const PolygonMesh& mesh, Sdc::SchemeType type, int approx_level) : mesh_(mesh) {
+  BfrSurfaces(const PolygonMesh& mesh, Sdc::SchemeType type, int approx_level) {
     refiner_ = base_refiner(mesh, type);
     Bfr::RefinerSurfaceFactory<>::Options options;
     options.SetApproxLevelSmooth(approx_level);
@@ -75,7 +75,6 @@ class BfrSurfaces {
   }
 
  private:
-  const PolygonMesh& mesh_;
   std::unique_ptr<Far::TopologyRefiner> refiner_;
   std::unique_ptr<Bfr::RefinerSurfaceFactory<>> factory_;
   std::vector<double> points_;

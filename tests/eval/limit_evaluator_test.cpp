@@ -516,7 +516,7 @@ TEST(LimitEvaluator, RegularQuadsAreTheBicubicBSplineOfTheirControlPoints) {
   const LimitEvaluator evaluator(torus, scheme("catmull-clark"));
   std::mt19937 random(5);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const auto id = [n](int i, int j) { return static_cast<std::size_t>(((j + n) % n) * n + (i + n) % n); };
+  const auto id = [](int i, int j) { return static_cast<std::size_t>(((j + n) % n) * n + (i + n) % n); };
   for (int trial = 0; trial < 200; ++trial) {
     const int i = trial % n, j = (trial / n) % n;
     const double u = unit(random), v = unit(random);

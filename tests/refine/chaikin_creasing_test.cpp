@@ -361,7 +361,7 @@ TEST(ChaikinCreasing, RefinesLikeOpenSubdivWithRandomCreases) {
 TEST(ChaikinCreasing, ExtrapolatedEdgePointAsOpenSubdiv) {
   // The 1.2 / 0.1 crease of RulesOneLevelDownFollowEachEnd, where the edge
   // point of 6-7 weights the crease rule by 1.2: OpenSubdiv's result too.
-  PolygonMesh mesh = creased_grid(static_cast<float>(1.2), static_cast<float>(0.1), CreaseMethod::chaikin);
+  PolygonMesh mesh = creased_grid(static_cast<double>(1.2f), static_cast<double>(0.1f), CreaseMethod::chaikin);
   mesh.positions[12].z = 1.0;
   for (const int levels : {1, 2, 3}) {
     RefineOptions o;

@@ -16,7 +16,9 @@
 
 // GCC flags a false "maybe uninitialized" inside OpenSubdiv's
 // interpFVarFromEdges (its edge weights are set whenever they are read).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyRefiner.h>
 
@@ -26,6 +28,7 @@
 #include <filesystem>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -89,7 +92,7 @@ double diagonal(const FaceVaryingChannel& ch) {
   const auto k = static_cast<std::size_t>(ch.components);
   double sum = 0.0;
   for (std::size_t c = 0; c < k; ++c) {
-    double lo = INFINITY, hi = -INFINITY;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t i = c; i < ch.values.size(); i += k) {
       lo = std::min(lo, ch.values[i]);
       hi = std::max(hi, ch.values[i]);
