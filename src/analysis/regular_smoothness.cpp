@@ -185,32 +185,56 @@ Family transition_family(const LatticeRule& rule) {
   return family;
 }
 
-double spectral_radius(const Eigen::MatrixXd& P) {
-  if (P.size() == 0) return 0.0;
-  return Eigen::EigenSolver<Eigen::MatrixXd>(P, false).eigenvalues().cwiseAbs().maxCoeff();
-}
+// The spectral radius and norm of products of one size, with the solvers'
+// workspaces kept from one product to the next: allocated afresh for each
+// product (thousands of them, hundreds of KB each), they spent a third of
+// the test's time in the kernel's page faults.
+class SpectralRadius {
+ public:
+  explicit SpectralRadius(Eigen::Index n) : solver_(n) {}
+  double operator()(const Eigen::MatrixXd& P) {
+    if (P.size() == 0) return 0.0;
+    solver_.compute(P, false);
+    return solver_.eigenvalues().cwiseAbs().maxCoeff();
+  }
 
-double spectral_norm(const Eigen::MatrixXd& P) {
-  if (P.size() == 0) return 0.0;
-  const Eigen::MatrixXd G = P.transpose() * P;
-  const double top = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(G, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
-  return std::sqrt(std::max(top, 0.0));
-}
+ private:
+  Eigen::EigenSolver<Eigen::MatrixXd> solver_;
+};
+
+class SpectralNorm {
+ public:
+  explicit SpectralNorm(Eigen::Index n) : gram_(n, n), solver_(n) {}
+  double operator()(const Eigen::MatrixXd& P) {
+    if (P.size() == 0) return 0.0;
+    gram_.noalias() = P.transpose() * P;
+    solver_.compute(gram_, Eigen::EigenvaluesOnly);
+    return std::sqrt(std::max(solver_.eigenvalues().maxCoeff(), 0.0));
+  }
+
+ private:
+  Eigen::MatrixXd gram_;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver_;
+};
 
 // Calls visit(word, product) for every word of length 1 .. max_length, the
-// product applying the word's first letter first.
+// product applying the word's first letter first. One product per length is
+// kept, each written over the last one of its length.
 template <class Visit>
 void for_each_product(const std::vector<Eigen::MatrixXd>& family, int max_length, Visit&& visit) {
   std::vector<int> word;
-  std::vector<Eigen::MatrixXd> prefix;
+  std::vector<Eigen::MatrixXd> prefix(static_cast<std::size_t>(std::max(max_length, 0)));
   const auto recurse = [&](auto&& self) -> void {
-    if (static_cast<int>(word.size()) == max_length) return;
+    const std::size_t depth = word.size();
+    if (static_cast<int>(depth) == max_length) return;
     for (std::size_t e = 0; e < family.size(); ++e) {
       word.push_back(static_cast<int>(e));
-      prefix.push_back(prefix.empty() ? family[e] : Eigen::MatrixXd(family[e] * prefix.back()));
-      visit(word, prefix.back());
+      if (depth == 0)
+        prefix[0] = family[e];
+      else
+        prefix[depth].noalias() = family[e] * prefix[depth - 1];
+      visit(word, prefix[depth]);
       self(self);
-      prefix.pop_back();
       word.pop_back();
     }
   };
@@ -248,6 +272,8 @@ RegularSmoothness regular_smoothness(const LatticeRule& rule, const RegularSmoot
   for (long long count = digits; count * digits <= options.products_per_length; count *= digits) ++length;
 
   // Lower bound: spectral radii of primitive products.
+  const auto n = family.matrices.front().rows();
+  SpectralRadius spectral_radius(n);
   for_each_product(family.matrices, length, [&](const std::vector<int>& word, const Eigen::MatrixXd& P) {
     if (!primitive_necklace(word)) return;
     const double r = std::pow(spectral_radius(P), 1.0 / static_cast<double>(word.size()));
@@ -258,7 +284,6 @@ RegularSmoothness regular_smoothness(const LatticeRule& rule, const RegularSmoot
   });
 
   // Upper bound: norms of products in the norm of X = sum P^T P / s^(2|w|).
-  const auto n = family.matrices.front().rows();
   const double s = std::max(result.lower, 1e-3 * result.critical);
   Eigen::MatrixXd X = Eigen::MatrixXd::Identity(n, n);
   for_each_product(family.matrices, (length + 1) / 2, [&](const std::vector<int>& word, const Eigen::MatrixXd& P) {
@@ -270,6 +295,7 @@ RegularSmoothness regular_smoothness(const LatticeRule& rule, const RegularSmoot
   std::vector<Eigen::MatrixXd> fitted;
   for (const Eigen::MatrixXd& T : family.matrices) fitted.push_back(R * T * R_inverse);
   std::vector<double> largest(static_cast<std::size_t>(length) + 1, 0.0);
+  SpectralNorm spectral_norm(n);
   for_each_product(fitted, length, [&](const std::vector<int>& word, const Eigen::MatrixXd& P) {
     double& m = largest[word.size()];
     m = std::max(m, spectral_norm(P));

@@ -390,10 +390,10 @@ if [ "$full" = 1 ]; then
   run adaptive-interpolatory-sqrt3 0 adaptive "$meshes/tetrahedron.obj" -s interpolatory-sqrt3 --eps 0.01 -o "$work/ai3.obj" &&
     stdout_has adaptive-interpolatory-sqrt3 " of two steps, every vertex on the limit"
 fi
-# The rate's joint spectral radius bound of the sqrt2 rules takes about 10 s
+# The rate's joint spectral radius bound of the sqrt2 rules takes about 6 s
 # on its own (regular_smoothness_of): a longer limit, so that a loaded
 # machine does not turn it into a failure.
-if [ "$full" = 1 ]; then  # 10 s in a release build: its rate bound
+if [ "$full" = 1 ]; then  # 6 s in a release build: its rate bound
   limit_s=$((limit_s * 3)) run adaptive-interpolating-sqrt2 0 adaptive "$meshes/cube.obj" -s interpolating-sqrt2 --eps 0.01 -o "$work/ai2.obj" &&
     stdout_has adaptive-interpolating-sqrt2 " of two steps, every vertex on the limit"
 fi
