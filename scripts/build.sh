@@ -31,8 +31,8 @@ elif [ "$mode" = "--sanitize" ] || [ "$mode" = "--fuzz" ]; then
   if [ "$mode" = "--fuzz" ]; then
     targets=(--target fuzz_obj fuzz_ply fuzz_off fuzz_gltf fuzz_stl fuzz_pipeline)
   fi
-  # A build-asan/ configured with another compiler (GCC, before the fuzzers
-  # joined it) cannot switch: it is a build product, made again.
+  # CMake cannot switch an existing build directory's compiler: one
+  # configured with another is a build product, made again.
   if [ -f "$build_dir/CMakeCache.txt" ] && ! grep -q "^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++-14$" "$build_dir/CMakeCache.txt"; then
     echo "build.sh: $build_dir/ was configured with another compiler: configuring it again with clang++-14"
     rm -rf "$build_dir"
