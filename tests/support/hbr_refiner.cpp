@@ -107,7 +107,7 @@ Level refine_catmark(const Input& input, int levels) {
   for (int v = first_vertex; v < last_vertex; ++v) {
     mesh.GetVertex(v)->GuaranteeNeighbors();  // applies the vertex's pending edits
     const float* p = mesh.GetVertex(v)->GetData().position();
-    out.positions.insert(out.positions.end(), {static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])});
+    for (int c = 0; c < 3; ++c) out.positions.push_back(static_cast<double>(p[c]));
   }
   for (int f = first_face; f < last_face; ++f) {
     ++out.faces;
